@@ -1,0 +1,19 @@
+#include "BallCandidate.h"
+
+namespace omnitune {
+
+std::string_view rejectReasonName(RejectReason r)
+{
+    switch (r) {
+    case RejectReason::None: return "accepted";
+    case RejectReason::OutsideArea: return "outside processed area";
+    case RejectReason::RadiusTooLarge: return "radius too large";
+    case RejectReason::NonGreen: return "non-green";
+    case RejectReason::NonBlack: return "non-black";
+    case RejectReason::Circularity: return "circularity";
+    case RejectReason::NotChosen: return "valid, not chosen";
+    }
+    return "?";
+}
+
+}  // namespace omnitune

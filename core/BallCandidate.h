@@ -1,0 +1,41 @@
+#pragma once
+// A possible ball: a Hough maximum (specific path) or circle (OpenCV path) with the three
+// validation scores of thesis section 4.4 / Table 4.1 and the test that rejected it.
+#include <string_view>
+
+namespace omnitune {
+
+enum class CandidateSource { SpecificHough, OpenCvHough };
+
+enum class RejectReason {
+    None,             // accepted
+    OutsideArea,      // centre not on a processed pixel
+    RadiusTooLarge,   // OpenCV circle larger than the expected radius at its distance
+    NonGreen,         // too much green in the ball square
+    NonBlack,         // too much black in the ball square (a robot)
+    Circularity,      // too few edges at the expected radius
+    NotChosen,        // valid, but another valid candidate scored higher
+};
+
+std::string_view rejectReasonName(RejectReason r);
+
+struct ValidationScores {
+    double nonGreenPct = 0.0;    // % of processed pixels in the ball square that are not green
+    double nonBlackPct = 0.0;    // % that are not black
+    double circularityPct = 0.0; // % of rays that meet an edge at the expected radius +- tolerance
+};
+
+struct BallCandidate {
+    CandidateSource source = CandidateSource::SpecificHough;
+    int area = -1;            // radial area index (0-based), -1 when not area-based
+    int x = 0;                // centre, px
+    int y = 0;
+    double distancePx = 0.0;  // to the robot centre
+    double radiusPx = 0.0;    // expected radius (specific) or the circle's radius (OpenCV)
+    double expectedRadiusPx = 0.0;
+    double accumulator = 0.0; // 3x3 Hough sum (specific) or 0 (OpenCV gives no votes)
+    ValidationScores scores;
+    RejectReason rejected = RejectReason::None;
+};
+
+}  // namespace omnitune

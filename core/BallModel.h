@@ -1,0 +1,47 @@
+#pragma once
+// Expected ball radius in the image as a function of the distance to the robot centre
+// (thesis Fig. 4.7: a 2nd-order polynomial fitted to measurements), and the side of the
+// square that holds the ball (`ballSquareSize`).
+#include <vector>
+
+namespace omnitune {
+
+struct BallModelOptions {
+    // radius(d) = c0 + c1*d + c2*d^2, d and radius in px. Refit per robot and camera.
+    double c0 = 39.0;       // px
+    double c1 = -0.28333;   // px/px
+    double c2 = 0.00055556; // px/px^2
+    double minRadius = 3.0;  // px; the model is clamped to [minRadius, maxRadius]
+    double maxRadius = 25.0; // px; the ball engaged in the robot
+    // Side of the validation square over the ball diameter. Below ~0.7 the square sees only the
+    // ball's middle; above 1 it takes in the carpet around it and the non-green test fails.
+    double squareRatio = 0.75;
+};
+
+class BallModel {
+public:
+    BallModel() = default;
+    // Tables the model for every integer distance in [0, maxDistance].
+    BallModel(const BallModelOptions& options, int maxDistance);
+
+    double radiusAt(double distancePx) const;
+    // Rounded radius used for voting, from the table.
+    int radiusIndexAt(double distancePx) const
+    {
+        int d = int(distancePx + 0.5);
+        if (d < 0) d = 0;
+        if (d >= int(radiusTable_.size())) d = int(radiusTable_.size()) - 1;
+        return radiusTable_[std::size_t(d)];
+    }
+    // Odd side length (px) of the square that holds a ball at this distance.
+    int squareSizeAt(double distancePx) const;
+    int maxRadiusPx() const { return maxRadiusPx_; }
+    const BallModelOptions& options() const { return options_; }
+
+private:
+    BallModelOptions options_;
+    std::vector<int> radiusTable_;
+    int maxRadiusPx_ = 0;
+};
+
+}  // namespace omnitune

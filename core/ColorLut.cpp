@@ -1,0 +1,125 @@
+#include "ColorLut.h"
+
+#include "Geometry.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace omnitune {
+
+std::array<HsvRange, kColorClassCount> ColorLutOptions::defaultRanges()
+{
+    std::array<HsvRange, kColorClassCount> r{};
+    r[std::size_t(ColorClass::Unknown)] = HsvRange{false, 0, 179, 0, 255, 0, 255};
+    r[std::size_t(ColorClass::Black)] = HsvRange{true, 0, 179, 0, 255, 0, 60};
+    r[std::size_t(ColorClass::White)] = HsvRange{true, 0, 179, 0, 50, 170, 255};
+    r[std::size_t(ColorClass::Green)] = HsvRange{true, 35, 85, 60, 255, 40, 255};
+    r[std::size_t(ColorClass::Orange)] = HsvRange{true, 5, 22, 120, 255, 80, 255};
+    r[std::size_t(ColorClass::Cyan)] = HsvRange{true, 86, 105, 120, 255, 80, 255};
+    r[std::size_t(ColorClass::Magenta)] = HsvRange{true, 140, 170, 100, 255, 80, 255};
+    return r;
+}
+
+ColorClass classifyHsv(const std::array<HsvRange, kColorClassCount>& ranges, int h, int s, int v)
+{
+    for (ColorClass c : kClassificationOrder)
+        if (ranges[std::size_t(c)].contains(h, s, v)) return c;
+    return ColorClass::Unknown;
+}
+
+std::array<std::uint8_t, 3> yuvToBgr(int y, int u, int v)
+{
+    const double du = u - 128.0;
+    const double dv = v - 128.0;
+    const double r = y + 1.402 * dv;
+    const double g = y - 0.344136 * du - 0.714136 * dv;
+    const double b = y + 1.772 * du;
+    return {cv::saturate_cast<std::uint8_t>(b), cv::saturate_cast<std::uint8_t>(g),
+            cv::saturate_cast<std::uint8_t>(r)};
+}
+
+void convertUyvyToBgr(const cv::Mat& uyvy, cv::Mat& bgr)
+{
+    CV_Assert(uyvy.type() == CV_8UC2 && uyvy.cols % 2 == 0);
+    bgr.create(uyvy.size(), CV_8UC3);
+    for (int y = 0; y < uyvy.rows; ++y) {
+        const std::uint8_t* in = uyvy.ptr<std::uint8_t>(y);
+        std::uint8_t* out = bgr.ptr<std::uint8_t>(y);
+        for (int x = 0; x < uyvy.cols; x += 2, in += 4, out += 6) {
+            const auto p0 = yuvToBgr(in[1], in[0], in[2]);
+            const auto p1 = yuvToBgr(in[3], in[0], in[2]);
+            std::copy(p0.begin(), p0.end(), out);
+            std::copy(p1.begin(), p1.end(), out + 3);
+        }
+    }
+}
+
+void ColorLut::compile(const ColorLutOptions& options)
+{
+    if (options.bits < 4 || options.bits > 8)
+        throw std::invalid_argument("colors.lut_bits = " + std::to_string(options.bits) + " is outside 4..8");
+    bits_ = options.bits;
+    shift_ = 8 - bits_;
+    const int levels = 1 << bits_;
+    const int half = (1 << shift_) / 2;  // each entry stands for the centre of its bin
+    const int entries = levels * levels * levels;
+
+    // Every bin centre as a BGR pixel (for the YUV table: converted from YUV first), then
+    // one cvtColor for all of them, so the table agrees with OpenCV's own HSV conversion.
+    cv::Mat bgrGrid(1, entries, CV_8UC3);
+    cv::Mat yuvGrid(1, entries, CV_8UC3);
+    for (int i = 0; i < entries; ++i) {
+        const int a = ((i >> (2 * bits_)) & (levels - 1)) << shift_;
+        const int b = ((i >> bits_) & (levels - 1)) << shift_;
+        const int c = (i & (levels - 1)) << shift_;
+        auto& g = bgrGrid.at<cv::Vec3b>(0, i);
+        g = cv::Vec3b(std::uint8_t(a + half), std::uint8_t(b + half), std::uint8_t(c + half));
+        const auto yuv = yuvToBgr(a + half, b + half, c + half);
+        yuvGrid.at<cv::Vec3b>(0, i) = cv::Vec3b(yuv[0], yuv[1], yuv[2]);
+    }
+    cv::Mat bgrHsv;
+    cv::Mat yuvHsv;
+    cv::cvtColor(bgrGrid, bgrHsv, cv::COLOR_BGR2HSV);
+    cv::cvtColor(yuvGrid, yuvHsv, cv::COLOR_BGR2HSV);
+    bgrTable_.assign(std::size_t(entries), 0);
+    yuvTable_.assign(std::size_t(entries), 0);
+    for (int i = 0; i < entries; ++i) {
+        const auto& p = bgrHsv.at<cv::Vec3b>(0, i);
+        const auto& q = yuvHsv.at<cv::Vec3b>(0, i);
+        bgrTable_[std::size_t(i)] = std::uint8_t(classifyHsv(options.ranges, p[0], p[1], p[2]));
+        yuvTable_[std::size_t(i)] = std::uint8_t(classifyHsv(options.ranges, q[0], q[1], q[2]));
+    }
+}
+
+void ColorLut::segment(const cv::Mat& frame, PixelFormat format, const std::vector<RowSpan>& spans,
+                       cv::Mat& classes) const
+{
+    CV_Assert(!empty());
+    CV_Assert(classes.type() == CV_8UC1 && classes.size() == frame.size());
+    if (format == PixelFormat::Bgr8) {
+        CV_Assert(frame.type() == CV_8UC3);
+        for (const RowSpan& s : spans) {
+            const std::uint8_t* in = frame.ptr<std::uint8_t>(s.y) + 3 * s.x0;
+            std::uint8_t* out = classes.ptr<std::uint8_t>(s.y);
+            for (int x = s.x0; x < s.x1; ++x, in += 3)
+                out[x] = bgrTable_[index(in[0], in[1], in[2])];
+        }
+        return;
+    }
+    CV_Assert(frame.type() == CV_8UC2);
+    for (const RowSpan& s : spans) {
+        const std::uint8_t* row = frame.ptr<std::uint8_t>(s.y);
+        std::uint8_t* out = classes.ptr<std::uint8_t>(s.y);
+        for (int x = s.x0; x < s.x1; ++x) {
+            // Pixel pair (x & ~1, x | 1) shares U and V: U0 Y0 V0 Y1.
+            const std::uint8_t* pair = row + 2 * (x & ~1);
+            const std::uint8_t y = (x & 1) ? pair[3] : pair[1];
+            out[x] = yuvTable_[index(y, pair[0], pair[2])];
+        }
+    }
+}
+
+}  // namespace omnitune

@@ -1,0 +1,215 @@
+#include "ConfigParser.h"
+
+#include "ConfigSchema.h"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace omnitune {
+
+namespace {
+
+std::string typeOf(const cv::FileNode& n)
+{
+    if (n.isInt()) return "an integer";
+    if (n.isReal()) return "a number";
+    if (n.isString()) return "text \"" + std::string(n) + "\"";
+    if (n.isSeq()) return "a list";
+    if (n.isMap()) return "a section";
+    return "nothing";
+}
+
+std::vector<std::string> splitPath(const std::string& path)
+{
+    std::vector<std::string> parts;
+    std::stringstream ss(path);
+    for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
+    return parts;
+}
+
+// Reads one key's node into a value, or explains why it cannot.
+std::optional<ConfigValue> readValue(const ConfigKey& k, const cv::FileNode& n, std::string& why)
+{
+    switch (k.type) {
+    case ValueType::Int:
+        if (n.isInt()) return ConfigValue(int(n));
+        break;
+    case ValueType::Double:
+        if (n.isInt() || n.isReal()) return ConfigValue(double(n));
+        break;
+    case ValueType::Bool:
+        if (n.isInt() && (int(n) == 0 || int(n) == 1)) return ConfigValue(int(n) == 1);
+        if (n.isString() && (std::string(n) == "true" || std::string(n) == "false"))
+            return ConfigValue(std::string(n) == "true");
+        break;
+    case ValueType::Text:
+        if (n.isString()) return ConfigValue(std::string(n));
+        break;
+    case ValueType::Choice:
+        if (n.isString()) {
+            const std::string s(n);
+            for (const auto& c : k.choices)
+                if (c == s) return ConfigValue(s);
+            std::string all;
+            for (const auto& c : k.choices) all += (all.empty() ? "" : ", ") + c;
+            why = "\"" + s + "\" is not one of " + all;
+            return std::nullopt;
+        }
+        break;
+    case ValueType::DoubleList:
+        if (n.isSeq()) {
+            std::vector<double> v;
+            for (const cv::FileNode& e : n) {
+                if (!e.isInt() && !e.isReal()) {
+                    why = "expected a list of numbers, found " + typeOf(e) + " in it";
+                    return std::nullopt;
+                }
+                v.push_back(double(e));
+            }
+            return ConfigValue(v);
+        }
+        break;
+    }
+    why = "expected " + std::string(k.type == ValueType::Bool ? "0/1 or true/false" : valueTypeName(k.type)) +
+          ", found " + typeOf(n);
+    return std::nullopt;
+}
+
+// Leaf keys present in the file but unknown to the schema.
+void collectUnknown(const cv::FileNode& node, const std::string& prefix, std::vector<std::string>& unknown)
+{
+    static const std::set<std::string> topLevel = {"schema", "saved_by", "complete"};
+    for (const cv::FileNode& child : node) {
+        const std::string path = prefix.empty() ? child.name() : prefix + "." + child.name();
+        if (prefix.empty() && topLevel.count(path)) continue;
+        if (findConfigKey(path)) continue;
+        if (child.isMap()) {
+            collectUnknown(child, path, unknown);
+            continue;
+        }
+        unknown.push_back(path);
+    }
+}
+
+// OpenCV's parse errors read "...: (line) : message" in several shapes; keep line and message.
+ConfigIssue parseIssue(const std::string& file, const cv::Exception& e)
+{
+    ConfigIssue is{ConfigIssueKind::ParseError, file, 0, "", "not a valid YAML config: " + e.err};
+    std::smatch m;
+    const std::string msg = e.msg;
+    if (std::regex_search(msg, m, std::regex(R"(\((\d+)\): ([^\n]*))"))) {
+        is.line = std::stoi(m[1]);
+        is.message = "not a valid YAML config: " + std::string(m[2]);
+    }
+    return is;
+}
+
+}  // namespace
+
+ConfigLoad parseConfig(const std::string& text, const std::string& fileName)
+{
+    ConfigLoad out;
+    auto fail = [&](ConfigIssueKind kind, const std::string& key, const std::string& message) {
+        out.error = ConfigIssue{kind, fileName, 0, key, message};
+        return out;
+    };
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+        return fail(ConfigIssueKind::ParseError, "", "the file is empty");
+
+    cv::FileStorage fs;
+    try {
+        // OpenCV wants the YAML directive to detect the format from memory.
+        const bool hasDirective = text.rfind("%YAML", 0) == 0;
+        fs.open(hasDirective ? text : "%YAML:1.0\n" + text, cv::FileStorage::READ | cv::FileStorage::MEMORY |
+                                                              cv::FileStorage::FORMAT_YAML);
+    } catch (const cv::Exception& e) {
+        out.error = parseIssue(fileName, e);
+        if (out.error->line > 0 && text.rfind("%YAML", 0) != 0) --out.error->line;  // our added line
+        return out;
+    }
+    if (!fs.isOpened()) return fail(ConfigIssueKind::ParseError, "", "not a valid YAML config");
+    const cv::FileNode root = fs.root();
+    if (!root.isMap()) return fail(ConfigIssueKind::NotAConfig, "", "the top level is not a map of sections");
+
+    const cv::FileNode schema = root["schema"];
+    if (schema.empty() || schema.isNone())
+        return fail(ConfigIssueKind::NotAConfig, "schema", "no 'schema' key: this is not an OmniTune config");
+    if (!schema.isInt()) return fail(ConfigIssueKind::WrongType, "schema", "expected an integer, found " + typeOf(schema));
+    if (int(schema) != kConfigSchemaVersion)
+        return fail(ConfigIssueKind::UnknownSchema, "schema",
+                    "schema " + std::to_string(int(schema)) + " is not known to this build, which reads schema " +
+                        std::to_string(kConfigSchemaVersion));
+    // Upgrades of older schemas would run here, one numbered step at a time (none exist yet).
+
+    if (!root["saved_by"].empty() && root["complete"].empty())
+        return fail(ConfigIssueKind::ParseError, "complete",
+                    "the file ends early (no 'complete' marker after the last section): it was cut short");
+
+    for (const ConfigKey& k : configSchema()) {
+        cv::FileNode n = root;
+        for (const std::string& part : splitPath(k.path)) {
+            if (!n.isMap()) {
+                n = cv::FileNode();
+                break;
+            }
+            n = n[part];
+        }
+        if (n.empty() || n.isNone()) {
+            out.warnings.push_back({ConfigIssueKind::MissingKey, fileName, 0, k.path,
+                                    "missing, using the default " + formatConfigValue(k.get(out.config))});
+            continue;
+        }
+        std::string why;
+        const auto value = readValue(k, n, why);
+        if (!value) return fail(ConfigIssueKind::WrongType, k.path, why);
+        k.set(out.config, *value);
+    }
+    std::vector<std::string> unknown;
+    collectUnknown(root, "", unknown);
+    for (const std::string& u : unknown)
+        out.warnings.push_back({ConfigIssueKind::UnknownKey, fileName, 0, u, "unknown key, ignored (a typo?)"});
+
+    const auto problems = checkConfig(out.config, fileName);
+    if (!problems.empty()) out.error = problems.front();
+    return out;
+}
+
+ConfigLoad loadConfig(const std::string& path)
+{
+    ConfigLoad out;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        out.error = ConfigIssue{ConfigIssueKind::FileUnreadable, path, 0, "",
+                                std::filesystem::exists(path) ? "cannot be read" : "no such file"};
+        return out;
+    }
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    out = parseConfig(buffer.str(), path);
+    if (!out.ok() || out.config.geometry.maskFile.empty()) return out;
+
+    const auto maskPath = std::filesystem::path(path).parent_path() / out.config.geometry.maskFile;
+    cv::Mat mask;
+    try {
+        mask = cv::imread(maskPath.string(), cv::IMREAD_GRAYSCALE);
+    } catch (const cv::Exception&) {
+        mask.release();
+    }
+    if (mask.empty()) {
+        out.error = ConfigIssue{ConfigIssueKind::MaskError, path, 0, "geometry.mask_file",
+                                "cannot read the mask image " + maskPath.string()};
+        return out;
+    }
+    out.config.mask = mask;
+    const auto problems = checkConfig(out.config, path);
+    if (!problems.empty()) out.error = problems.front();
+    return out;
+}
+
+}  // namespace omnitune

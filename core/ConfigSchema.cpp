@@ -1,0 +1,382 @@
+#include "ConfigSchema.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace omnitune {
+
+namespace {
+
+// Builders: `ref` is a generic lambda returning the field of a (const or mutable) Config.
+template <class F>
+ConfigKey intKey(std::string path, std::string unit, int min, int max, bool thesis, std::string meaning, F ref)
+{
+    ConfigKey k{std::move(path), ValueType::Int, std::move(unit), double(min), double(max), std::move(meaning), {}, thesis, {}, {}};
+    k.get = [ref](const Config& c) { return ConfigValue(int(ref(c))); };
+    k.set = [ref](Config& c, const ConfigValue& v) { ref(c) = std::get<int>(v); };
+    return k;
+}
+
+template <class F>
+ConfigKey doubleKey(std::string path, std::string unit, double min, double max, bool thesis, std::string meaning, F ref)
+{
+    ConfigKey k{std::move(path), ValueType::Double, std::move(unit), min, max, std::move(meaning), {}, thesis, {}, {}};
+    k.get = [ref](const Config& c) { return ConfigValue(double(ref(c))); };
+    k.set = [ref](Config& c, const ConfigValue& v) { ref(c) = std::get<double>(v); };
+    return k;
+}
+
+template <class F>
+ConfigKey boolKey(std::string path, bool thesis, std::string meaning, F ref)
+{
+    ConfigKey k{std::move(path), ValueType::Bool, "", 0, 1, std::move(meaning), {}, thesis, {}, {}};
+    k.get = [ref](const Config& c) { return ConfigValue(bool(ref(c))); };
+    k.set = [ref](Config& c, const ConfigValue& v) { ref(c) = std::get<bool>(v); };
+    return k;
+}
+
+template <class F>
+ConfigKey textKey(std::string path, std::string meaning, F ref)
+{
+    ConfigKey k{std::move(path), ValueType::Text, "", 0, 0, std::move(meaning), {}, false, {}, {}};
+    k.get = [ref](const Config& c) { return ConfigValue(std::string(ref(c))); };
+    k.set = [ref](Config& c, const ConfigValue& v) { ref(c) = std::get<std::string>(v); };
+    return k;
+}
+
+template <class F>
+ConfigKey listKey(std::string path, std::string unit, double min, double max, bool thesis, std::string meaning, F ref)
+{
+    ConfigKey k{std::move(path), ValueType::DoubleList, std::move(unit), min, max, std::move(meaning), {}, thesis, {}, {}};
+    k.get = [ref](const Config& c) { return ConfigValue(std::vector<double>(ref(c))); };
+    k.set = [ref](Config& c, const ConfigValue& v) { ref(c) = std::get<std::vector<double>>(v); };
+    return k;
+}
+
+std::vector<ConfigKey> buildSchema()
+{
+    std::vector<ConfigKey> s;
+    // camera
+    s.push_back(textKey("camera.model", "Camera model, informational (e.g. \"PointGrey Flea2\")",
+                        [](auto& c) -> auto& { return c.camera.model; }));
+    s.push_back(doubleKey("camera.frame_rate", "frames/s", 1, 240, true, "Acquisition rate; the per-frame budget is its inverse (30 fps: 33.3 ms)",
+                          [](auto& c) -> auto& { return c.camera.frameRate; }));
+    s.push_back(intKey("camera.exposure", "register", 0, 4095, false, "IIDC exposure; too high blurs a moving ball, too low darkens the carpet",
+                       [](auto& c) -> auto& { return c.camera.exposure; }));
+    s.push_back(intKey("camera.white_balance_blue", "register", 0, 1023, false, "IIDC white balance U/B",
+                       [](auto& c) -> auto& { return c.camera.whiteBalanceBlue; }));
+    s.push_back(intKey("camera.white_balance_red", "register", 0, 1023, false, "IIDC white balance V/R",
+                       [](auto& c) -> auto& { return c.camera.whiteBalanceRed; }));
+    s.push_back(intKey("camera.gain", "register", 0, 1023, false, "IIDC gain; high gain adds noise that breaks edges",
+                       [](auto& c) -> auto& { return c.camera.gain; }));
+    s.push_back(intKey("camera.brightness", "register", 0, 1023, false, "IIDC brightness (black level)",
+                       [](auto& c) -> auto& { return c.camera.brightness; }));
+
+    // colour classes
+    s.push_back(intKey("colors.lut_bits", "bits", 4, 8, false,
+                       "LUT index bits per channel: 6 gives a 256 KiB table that stays in L2 (see docs/performance.md); fewer bits coarsen class borders",
+                       [](auto& c) -> auto& { return c.colors.bits; }));
+    for (ColorClass cls : kClassificationOrder) {
+        const std::string p = "colors." + std::string(colorClassKey(cls)) + ".";
+        const std::size_t i = std::size_t(cls);
+        const std::string name(colorClassKey(cls));
+        s.push_back(boolKey(p + "enabled", false, "Whether the " + name + " class is used at all",
+                            [i](auto& c) -> auto& { return c.colors.ranges[i].enabled; }));
+        s.push_back(intKey(p + "h_min", "hue", 0, 179, false, "Lowest hue of " + name + " (OpenCV scale 0..179); above h_max the range wraps through 0",
+                           [i](auto& c) -> auto& { return c.colors.ranges[i].hMin; }));
+        s.push_back(intKey(p + "h_max", "hue", 0, 179, false, "Highest hue of " + name,
+                           [i](auto& c) -> auto& { return c.colors.ranges[i].hMax; }));
+        s.push_back(intKey(p + "s_min", "0..255", 0, 255, false, "Lowest saturation of " + name,
+                           [i](auto& c) -> auto& { return c.colors.ranges[i].sMin; }));
+        s.push_back(intKey(p + "s_max", "0..255", 0, 255, false, "Highest saturation of " + name,
+                           [i](auto& c) -> auto& { return c.colors.ranges[i].sMax; }));
+        s.push_back(intKey(p + "v_min", "0..255", 0, 255, false, "Lowest value (brightness) of " + name,
+                           [i](auto& c) -> auto& { return c.colors.ranges[i].vMin; }));
+        s.push_back(intKey(p + "v_max", "0..255", 0, 255, false, "Highest value (brightness) of " + name,
+                           [i](auto& c) -> auto& { return c.colors.ranges[i].vMax; }));
+    }
+
+    // geometry
+    s.push_back(intKey("geometry.image_width", "px", 16, 4096, true, "Frame width this geometry belongs to; other frame sizes are refused",
+                       [](auto& c) -> auto& { return c.geometry.imageWidth; }));
+    s.push_back(intKey("geometry.image_height", "px", 16, 4096, true, "Frame height this geometry belongs to",
+                       [](auto& c) -> auto& { return c.geometry.imageHeight; }));
+    s.push_back(doubleKey("geometry.center_x", "px", 0, 4096, false, "Robot centre (mirror axis) in the image, x",
+                          [](auto& c) -> auto& { return c.geometry.centerX; }));
+    s.push_back(doubleKey("geometry.center_y", "px", 0, 4096, false, "Robot centre in the image, y",
+                          [](auto& c) -> auto& { return c.geometry.centerY; }));
+    s.push_back(doubleKey("geometry.inner_radius", "px", 0, 2048, false, "Pixels closer to the centre are the robot itself and never processed",
+                          [](auto& c) -> auto& { return c.geometry.innerRadius; }));
+    s.push_back(doubleKey("geometry.outer_radius", "px", 1, 2048, true, "Pixels farther from the centre are outside the mirror and never processed",
+                          [](auto& c) -> auto& { return c.geometry.outerRadius; }));
+    s.push_back(textKey("geometry.mask_file", "Mask image beside config.yml, white = process, black = robot body, rods, reflections; empty: none",
+                        [](auto& c) -> auto& { return c.geometry.maskFile; }));
+
+    // radial sensors
+    s.push_back(intKey("sensors.count", "rays", 1, 720, false, "Radial sensors evenly spread over 360 degrees (line and obstacle search)",
+                       [](auto& c) -> auto& { return c.sensors.count; }));
+    s.push_back(doubleKey("sensors.inner_radius", "px", 0, 2048, false, "Where each sensor ray starts",
+                          [](auto& c) -> auto& { return c.sensors.innerRadius; }));
+    s.push_back(doubleKey("sensors.outer_radius", "px", 1, 2048, false, "Where each sensor ray ends",
+                          [](auto& c) -> auto& { return c.sensors.outerRadius; }));
+
+    // distance map
+    s.push_back(listKey("distance_map.pixel_radii", "px", 0, 4096, false, "Calibration points: image distance from the centre, strictly increasing",
+                        [](auto& c) -> auto& { return c.distanceMap.pixelRadii; }));
+    s.push_back(listKey("distance_map.ground_distances", "m", 0, 100, false, "Ground distance seen at each pixel_radii entry, strictly increasing",
+                        [](auto& c) -> auto& { return c.distanceMap.groundDistances; }));
+    s.push_back(doubleKey("distance_map.viewpoint_height", "m", 0.05, 5, false, "Height of the mirror's effective viewpoint above the ground (ball-height correction)",
+                          [](auto& c) -> auto& { return c.distanceMap.viewpointHeight; }));
+    s.push_back(doubleKey("distance_map.ball_radius", "m", 0.01, 1, false, "Real ball radius: its centre is this high (ball-height correction)",
+                          [](auto& c) -> auto& { return c.distanceMap.ballRadius; }));
+
+    // ball model
+    s.push_back(doubleKey("ball.c0", "px", -1000, 1000, false, "Expected radius r(d) = c0 + c1*d + c2*d^2 (thesis Fig. 4.7), constant term",
+                          [](auto& c) -> auto& { return c.ball.c0; }));
+    s.push_back(doubleKey("ball.c1", "px/px", -100, 100, false, "Linear term of r(d)",
+                          [](auto& c) -> auto& { return c.ball.c1; }));
+    s.push_back(doubleKey("ball.c2", "px/px^2", -10, 10, false, "Quadratic term of r(d)",
+                          [](auto& c) -> auto& { return c.ball.c2; }));
+    s.push_back(doubleKey("ball.min_radius", "px", 1, 100, true, "r(d) is never below this (far ball)",
+                          [](auto& c) -> auto& { return c.ball.minRadius; }));
+    s.push_back(doubleKey("ball.max_radius", "px", 1, 200, true, "r(d) is never above this (ball engaged in the robot)",
+                          [](auto& c) -> auto& { return c.ball.maxRadius; }));
+    s.push_back(doubleKey("ball.square_ratio", "ratio", 0.2, 2, false,
+                          "Validation square side over the ball diameter; below ~0.7 it sees only the ball's middle, above 1 carpet enters and the non-green test fails",
+                          [](auto& c) -> auto& { return c.ball.squareRatio; }));
+
+    // edges
+    s.push_back(intKey("edges.canny_low", "|dx|+|dy|", 0, 1020, true, "Canny low threshold: edges grow along pixels above it; lower: noisier, broken lines join",
+                       [](auto& c) -> auto& { return c.edges.cannyLow; }));
+    s.push_back(intKey("edges.canny_high", "|dx|+|dy|", 0, 1020, true, "Canny high threshold: edges start above it; higher: faint ball borders vanish",
+                       [](auto& c) -> auto& { return c.edges.cannyHigh; }));
+
+    // specific Hough
+    s.push_back(doubleKey("hough.near_robot_radius", "px", 0, 2048, true, "Votes for centres closer than this count near_robot_weight times (the ball there is half hidden)",
+                          [](auto& c) -> auto& { return c.hough.nearRobotRadius; }));
+    s.push_back(intKey("hough.near_robot_weight", "votes", 1, 10, true, "Weight of a vote near the robot",
+                       [](auto& c) -> auto& { return c.hough.nearRobotWeight; }));
+    s.push_back(boolKey("hough.multiple_maxima", true, "One maximum per radial area (thesis 4.1.2) instead of one absolute maximum (4.1.1)",
+                        [](auto& c) -> auto& { return c.hough.multipleMaxima; }));
+    s.push_back(listKey("hough.area_bounds", "px", 1, 4096, true, "Outer bounds of the radial areas, increasing; area i spans (bound[i-1], bound[i]]",
+                        [](auto& c) -> auto& { return c.hough.areaBounds; }));
+    s.push_back(intKey("hough.min_accumulator", "votes", 1, 100000, false, "A maximum whose 3x3 vote sum is below this gives no candidate; higher: fewer, stronger candidates",
+                       [](auto& c) -> auto& { return c.hough.minAccumulator; }));
+
+    // OpenCV Hough
+    s.push_back(doubleKey("opencv_hough.dp", "ratio", 1, 4, true, "Inverse accumulator resolution of cv::HoughCircles (2: half width and height)",
+                          [](auto& c) -> auto& { return c.opencvHough.dp; }));
+    s.push_back(doubleKey("opencv_hough.min_dist", "px", 1, 1000, true, "Minimum distance between circle centres; too small duplicates a ball, too large misses balls",
+                          [](auto& c) -> auto& { return c.opencvHough.minDist; }));
+    s.push_back(doubleKey("opencv_hough.canny_high", "gradient", 1, 1020, true, "High threshold of HoughCircles' internal Canny (its low threshold is half)",
+                          [](auto& c) -> auto& { return c.opencvHough.cannyHigh; }));
+    s.push_back(doubleKey("opencv_hough.acc_threshold", "votes", 1, 1000, false, "Accumulator votes a circle centre needs; lower: more (and false) circles, higher: small balls missed",
+                          [](auto& c) -> auto& { return c.opencvHough.accThreshold; }));
+    s.push_back(intKey("opencv_hough.min_radius", "px", 1, 200, true, "Smallest circle searched; below 3 px there is no ball",
+                       [](auto& c) -> auto& { return c.opencvHough.minRadius; }));
+    s.push_back(intKey("opencv_hough.max_radius", "px", 1, 200, true, "Largest circle searched (the ball engaged in the robot)",
+                       [](auto& c) -> auto& { return c.opencvHough.maxRadius; }));
+    s.push_back(doubleKey("opencv_hough.max_radius_ratio", "ratio", 0.5, 3, false,
+                          "A circle above expected radius x this is rejected (thesis: 1.0; slack absorbs HoughCircles' radius rounding)",
+                          [](auto& c) -> auto& { return c.opencvHough.maxRadiusRatio; }));
+    s.push_back(intKey("opencv_hough.max_circles", "circles", 1, 50, true, "Circles validated per frame, strongest first (thesis: the first)",
+                       [](auto& c) -> auto& { return c.opencvHough.maxCircles; }));
+
+    // validation
+    s.push_back(doubleKey("validation.min_non_green_pct", "%", 0, 100, true, "Non-green share the ball square needs; lower lets carpet patches through",
+                          [](auto& c) -> auto& { return c.validation.minNonGreenPct; }));
+    s.push_back(doubleKey("validation.min_non_black_pct", "%", 0, 100, true, "Non-black share the ball square needs; higher rejects part-black balls, lower lets robots through",
+                          [](auto& c) -> auto& { return c.validation.minNonBlackPct; }));
+    s.push_back(doubleKey("validation.min_circularity_pct", "%", 0, 100, true, "Share of the circle found as edges; higher loses blurred moving balls, lower accepts lines and feet",
+                          [](auto& c) -> auto& { return c.validation.minCircularityPct; }));
+    s.push_back(doubleKey("validation.radius_tolerance", "fraction", 0, 1, true, "Edges count within expected radius +- this fraction",
+                          [](auto& c) -> auto& { return c.validation.radiusTolerance; }));
+    s.push_back(doubleKey("validation.min_radius_band_px", "px", 0, 10, false, "The +- band is never thinner than this (15 % of a 3 px ball is under a pixel)",
+                          [](auto& c) -> auto& { return c.validation.minRadiusBandPx; }));
+
+    // algorithm
+    ConfigKey alg{"algorithm.method", ValueType::Choice, "", 0, 0,
+                  "Ball search: specific Hough (4.1), cv::HoughCircles (4.2), or specific then OpenCV when it fails (4.3)",
+                  {"specific", "opencv", "combined"}, true, {}, {}};
+    alg.get = [](const Config& c) { return ConfigValue(std::string(algorithmName(c.algorithm))); };
+    alg.set = [](Config& c, const ConfigValue& v) {
+        if (auto a = parseAlgorithm(std::get<std::string>(v))) c.algorithm = *a;
+    };
+    s.push_back(std::move(alg));
+    return s;
+}
+
+std::string formatNumber(double v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
+
+ConfigIssue issue(ConfigIssueKind kind, const std::string& file, const std::string& key, const std::string& message)
+{
+    return ConfigIssue{kind, file, 0, key, message};
+}
+
+bool strictlyIncreasing(const std::vector<double>& v)
+{
+    for (std::size_t i = 1; i < v.size(); ++i)
+        if (!(v[i] > v[i - 1])) return false;
+    return true;
+}
+
+}  // namespace
+
+std::string_view valueTypeName(ValueType t)
+{
+    switch (t) {
+    case ValueType::Int: return "integer";
+    case ValueType::Double: return "number";
+    case ValueType::Bool: return "boolean";
+    case ValueType::Text: return "text";
+    case ValueType::Choice: return "choice";
+    case ValueType::DoubleList: return "list of numbers";
+    }
+    return "?";
+}
+
+const std::vector<ConfigKey>& configSchema()
+{
+    static const std::vector<ConfigKey> schema = buildSchema();
+    return schema;
+}
+
+const ConfigKey* findConfigKey(std::string_view path)
+{
+    for (const ConfigKey& k : configSchema())
+        if (k.path == path) return &k;
+    return nullptr;
+}
+
+std::string formatConfigValue(const ConfigValue& v)
+{
+    if (const int* i = std::get_if<int>(&v)) return std::to_string(*i);
+    if (const double* d = std::get_if<double>(&v)) return formatNumber(*d);
+    if (const bool* b = std::get_if<bool>(&v)) return *b ? "true" : "false";
+    if (const std::string* s = std::get_if<std::string>(&v)) return *s;
+    std::string out = "[";
+    for (double d : std::get<std::vector<double>>(v)) out += (out.size() > 1 ? ", " : "") + formatNumber(d);
+    return out + "]";
+}
+
+std::vector<ConfigIssue> checkConfig(const Config& c, const std::string& file)
+{
+    std::vector<ConfigIssue> out;
+    for (const ConfigKey& k : configSchema()) {
+        const ConfigValue v = k.get(c);
+        const std::string range = formatNumber(k.min) + ".." + formatNumber(k.max);
+        auto outside = [&](double x) { return !(x >= k.min && x <= k.max); };  // NaN is outside
+        if (k.type == ValueType::Int || k.type == ValueType::Double) {
+            const double x = k.type == ValueType::Int ? double(std::get<int>(v)) : std::get<double>(v);
+            if (outside(x))
+                out.push_back(issue(ConfigIssueKind::OutOfRange, file, k.path,
+                                    formatConfigValue(v) + " is outside " + range + (k.unit.empty() ? "" : " " + k.unit)));
+        } else if (k.type == ValueType::DoubleList) {
+            for (double x : std::get<std::vector<double>>(v))
+                if (outside(x)) {
+                    out.push_back(issue(ConfigIssueKind::OutOfRange, file, k.path,
+                                        "element " + formatNumber(x) + " is outside " + range + " " + k.unit));
+                    break;
+                }
+        }
+    }
+    auto inconsistent = [&](const std::string& key, const std::string& message) {
+        out.push_back(issue(ConfigIssueKind::Inconsistent, file, key, message));
+    };
+    if (c.edges.cannyLow > c.edges.cannyHigh)
+        inconsistent("edges.canny_low", "canny_low (" + std::to_string(c.edges.cannyLow) + ") is above canny_high (" +
+                                            std::to_string(c.edges.cannyHigh) + ")");
+    if (!(c.geometry.innerRadius < c.geometry.outerRadius))
+        inconsistent("geometry.inner_radius", "inner_radius must be below outer_radius");
+    if (c.geometry.centerX >= c.geometry.imageWidth || c.geometry.centerY >= c.geometry.imageHeight)
+        inconsistent("geometry.center_x", "the robot centre lies outside the " + std::to_string(c.geometry.imageWidth) + "x" +
+                                              std::to_string(c.geometry.imageHeight) + " image");
+    if (!(c.sensors.innerRadius < c.sensors.outerRadius))
+        inconsistent("sensors.inner_radius", "inner_radius must be below outer_radius");
+    const auto& dm = c.distanceMap;
+    if (dm.pixelRadii.size() < 2 || dm.pixelRadii.size() != dm.groundDistances.size())
+        inconsistent("distance_map.ground_distances", "pixel_radii has " + std::to_string(dm.pixelRadii.size()) +
+                                                          " points and ground_distances " + std::to_string(dm.groundDistances.size()) +
+                                                          "; both need the same number, at least 2");
+    if (!strictlyIncreasing(dm.pixelRadii)) inconsistent("distance_map.pixel_radii", "must be strictly increasing");
+    if (!strictlyIncreasing(dm.groundDistances)) inconsistent("distance_map.ground_distances", "must be strictly increasing");
+    if (!(dm.viewpointHeight > dm.ballRadius))
+        inconsistent("distance_map.viewpoint_height", "the viewpoint must be above the ball centre (ball_radius)");
+    if (c.ball.minRadius > c.ball.maxRadius) inconsistent("ball.min_radius", "min_radius is above max_radius");
+    if (c.hough.areaBounds.empty()) inconsistent("hough.area_bounds", "needs at least one bound");
+    if (c.hough.areaBounds.size() > 254) inconsistent("hough.area_bounds", "at most 254 areas");
+    if (!strictlyIncreasing(c.hough.areaBounds)) inconsistent("hough.area_bounds", "must be strictly increasing");
+    if (c.opencvHough.minRadius > c.opencvHough.maxRadius)
+        inconsistent("opencv_hough.min_radius", "min_radius is above max_radius");
+    for (ColorClass cls : kClassificationOrder) {
+        const HsvRange& r = c.colors.ranges[std::size_t(cls)];
+        const std::string p = "colors." + std::string(colorClassKey(cls));
+        if (r.sMin > r.sMax) inconsistent(p + ".s_min", "s_min is above s_max");
+        if (r.vMin > r.vMax) inconsistent(p + ".v_min", "v_min is above v_max");
+    }
+    if (!c.mask.empty() && (c.mask.cols != c.geometry.imageWidth || c.mask.rows != c.geometry.imageHeight))
+        out.push_back(issue(ConfigIssueKind::MaskError, file, "geometry.mask_file",
+                            "the mask is " + std::to_string(c.mask.cols) + "x" + std::to_string(c.mask.rows) +
+                                " but the image is " + std::to_string(c.geometry.imageWidth) + "x" +
+                                std::to_string(c.geometry.imageHeight)));
+    return out;
+}
+
+std::string configSchemaMarkdown()
+{
+    static const std::pair<const char*, const char*> sections[] = {
+        {"camera", "Camera settings (IIDC features through libdc1394), in the camera's register units."},
+        {"colors", "Colour classes as HSV ranges in OpenCV's 8-bit scale (H 0..179, S and V 0..255). The first class "
+                   "in the order black, white, green, orange, cyan, magenta whose range holds a colour wins; "
+                   "no match is `unknown`. A hue range with h_min above h_max wraps through 0 (red: 170..10)."},
+        {"geometry", "Where the robot is in the image and which pixels are processed."},
+        {"sensors", "Radial sensors for line and obstacle search (thesis Fig. 4.3)."},
+        {"distance_map", "Image distance (px) to ground distance (m), monotone cubic through the calibration points; "
+                         "the ball position is scaled by (viewpoint_height - ball_radius) / viewpoint_height."},
+        {"ball", "Expected ball radius in the image by distance to the centre (thesis Fig. 4.7), and the validation square."},
+        {"edges", "Canny on the green / non-green image (thesis 4, Fig. 4.6)."},
+        {"hough", "Specific circular Hough transform (thesis 4.1)."},
+        {"opencv_hough", "cv::HoughCircles with HOUGH_GRADIENT (thesis 4.2)."},
+        {"validation", "Candidate validation (thesis 4.4); all three tests must pass."},
+        {"algorithm", "Which search runs (thesis 4.1-4.3)."},
+    };
+    const Config defaults;
+    std::ostringstream md;
+    md << "# config.yml reference\n\n"
+       << "<!-- Generated from core/ConfigSchema.cpp by `omnitune-detect --config-doc`; do not edit by hand.\n"
+       << "     The test core/config_schema fails when this file is out of date. -->\n\n"
+       << "`config.yml` is written and read with OpenCV's `cv::FileStorage` (YAML), so the robot needs nothing\n"
+       << "beyond OpenCV to read it. It starts with `schema: " << kConfigSchemaVersion << "`; a file with another\n"
+       << "schema version is refused. Files OmniTune writes also carry `saved_by` at the top and `complete: 1`\n"
+       << "at the end: a saved file without the end marker was cut short and is refused. A missing key takes its\n"
+       << "default with a warning; an unknown key is reported as a warning (a typo?). Saving writes a temporary\n"
+       << "file and renames it over `config.yml`, keeping the previous file as `config.yml.bak`.\n\n"
+       << "Defaults marked **(thesis)** are the numbers published in the thesis (chapter 4); the others are\n"
+       << "OmniTune's choices for the bundled simulated camera and should be tuned per robot.\n";
+    for (const auto& [name, text] : sections) {
+        md << "\n## " << name << "\n\n" << text << "\n\n"
+           << "| key | type | unit | default | range | meaning |\n|---|---|---|---|---|---|\n";
+        for (const ConfigKey& k : configSchema()) {
+            if (k.path.compare(0, std::string(name).size() + 1, std::string(name) + ".") != 0) continue;
+            std::string range;
+            if (k.type == ValueType::Choice) {
+                for (const auto& ch : k.choices) range += (range.empty() ? "" : ", ") + ("`" + ch + "`");
+            } else if (k.type == ValueType::Int || k.type == ValueType::Double || k.type == ValueType::DoubleList) {
+                range = formatNumber(k.min) + " .. " + formatNumber(k.max);
+            }
+            std::string def = formatConfigValue(k.get(defaults));
+            if (def.empty()) def = "(empty)";
+            md << "| `" << k.path << "` | " << valueTypeName(k.type) << " | " << k.unit << " | `" << def << "`"
+               << (k.fromThesis ? " (thesis)" : "") << " | " << range << " | " << k.meaning << " |\n";
+        }
+    }
+    return md.str();
+}
+
+}  // namespace omnitune

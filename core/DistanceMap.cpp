@@ -1,0 +1,81 @@
+#include "DistanceMap.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace omnitune {
+
+DistanceMap::DistanceMap(const DistanceMapOptions& options) : options_(options)
+{
+    const auto& x = options.pixelRadii;
+    const auto& y = options.groundDistances;
+    if (x.size() < 2 || x.size() != y.size())
+        throw std::invalid_argument("distance_map: pixel_radii and ground_distances need the same number (>= 2) of points");
+    for (std::size_t i = 1; i < x.size(); ++i) {
+        if (!(x[i] > x[i - 1])) throw std::invalid_argument("distance_map.pixel_radii must be strictly increasing");
+        if (!(y[i] > y[i - 1])) throw std::invalid_argument("distance_map.ground_distances must be strictly increasing");
+    }
+    if (!(options.viewpointHeight > options.ballRadius))
+        throw std::invalid_argument("distance_map.viewpoint_height must be above distance_map.ball_radius");
+
+    // Fritsch-Carlson tangents: monotone data gives a monotone interpolant.
+    const std::size_t n = x.size();
+    std::vector<double> secant(n - 1);
+    for (std::size_t i = 0; i + 1 < n; ++i) secant[i] = (y[i + 1] - y[i]) / (x[i + 1] - x[i]);
+    slopes_.assign(n, 0.0);
+    slopes_[0] = secant[0];
+    slopes_[n - 1] = secant[n - 2];
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+        const double a = secant[i - 1];
+        const double b = secant[i];
+        if (a * b <= 0) continue;
+        const double w1 = 2 * (x[i + 1] - x[i]) + (x[i] - x[i - 1]);
+        const double w2 = (x[i + 1] - x[i]) + 2 * (x[i] - x[i - 1]);
+        slopes_[i] = (w1 + w2) / (w1 / a + w2 / b);  // weighted harmonic mean
+    }
+}
+
+double DistanceMap::toGround(double px) const
+{
+    const auto& x = options_.pixelRadii;
+    const auto& y = options_.groundDistances;
+    if (px <= x.front()) return y.front() + (px - x.front()) * slopes_.front();
+    if (px >= x.back()) return y.back() + (px - x.back()) * slopes_.back();
+    const std::size_t i = std::size_t(std::upper_bound(x.begin(), x.end(), px) - x.begin()) - 1;
+    const double h = x[i + 1] - x[i];
+    const double t = (px - x[i]) / h;
+    const double t2 = t * t;
+    const double t3 = t2 * t;
+    return (2 * t3 - 3 * t2 + 1) * y[i] + (t3 - 2 * t2 + t) * h * slopes_[i] + (-2 * t3 + 3 * t2) * y[i + 1] +
+           (t3 - t2) * h * slopes_[i + 1];
+}
+
+double DistanceMap::toPixels(double metres) const
+{
+    const auto& x = options_.pixelRadii;
+    const auto& y = options_.groundDistances;
+    if (metres <= y.front()) return x.front() + (metres - y.front()) / slopes_.front();
+    if (metres >= y.back()) return x.back() + (metres - y.back()) / slopes_.back();
+    double lo = x.front();
+    double hi = x.back();
+    for (int i = 0; i < 60 && hi - lo > 1e-9; ++i) {  // toGround is monotone: bisect
+        const double mid = 0.5 * (lo + hi);
+        (toGround(mid) < metres ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+double DistanceMap::ballDistance(double px) const
+{
+    const double h = options_.viewpointHeight;
+    return toGround(px) * (h - options_.ballRadius) / h;
+}
+
+double DistanceMap::ballPixels(double metres) const
+{
+    const double h = options_.viewpointHeight;
+    return toPixels(metres * h / (h - options_.ballRadius));
+}
+
+}  // namespace omnitune

@@ -1,0 +1,123 @@
+#include "Edges.h"
+
+#include "ColorClass.h"
+#include "Geometry.h"
+
+#include <cstdlib>
+
+namespace omnitune {
+
+void makeBinary(const cv::Mat& classes, const Geometry& geometry, cv::Mat& binary)
+{
+    CV_Assert(classes.type() == CV_8UC1);
+    binary.create(classes.size(), CV_8UC1);
+    binary.setTo(255);
+    const auto green = std::uint8_t(ColorClass::Green);
+    for (const RowSpan& s : geometry.spans()) {
+        const std::uint8_t* in = classes.ptr<std::uint8_t>(s.y);
+        std::uint8_t* out = binary.ptr<std::uint8_t>(s.y);
+        for (int x = s.x0; x < s.x1; ++x) out[x] = in[x] == green ? 255 : 0;
+    }
+}
+
+namespace {
+// tan(22.5 deg) in 15-bit fixed point, as in OpenCV's Canny, so that directions match it.
+constexpr int kShift = 15;
+constexpr int kTan22 = 13573;
+}  // namespace
+
+void CannyDetector::detect(const cv::Mat& gray, const EdgeOptions& options, cv::Mat& edges)
+{
+    CV_Assert(gray.type() == CV_8UC1 && gray.isContinuous());
+    const int w = gray.cols;
+    const int h = gray.rows;
+    const std::size_t n = std::size_t(w) * std::size_t(h);
+    dx_.resize(n);
+    dy_.resize(n);
+    magnitude_.resize(n);
+    state_.resize(n);
+    if (stack_.capacity() < n) stack_.reserve(n);
+    stack_.clear();
+
+    // 3x3 Sobel with a replicated border, L1 magnitude.
+    for (int y = 0; y < h; ++y) {
+        const std::uint8_t* up = gray.ptr<std::uint8_t>(y > 0 ? y - 1 : 0);
+        const std::uint8_t* mid = gray.ptr<std::uint8_t>(y);
+        const std::uint8_t* down = gray.ptr<std::uint8_t>(y < h - 1 ? y + 1 : h - 1);
+        const std::size_t row = std::size_t(y) * std::size_t(w);
+        for (int x = 0; x < w; ++x) {
+            const int l = x > 0 ? x - 1 : 0;
+            const int r = x < w - 1 ? x + 1 : w - 1;
+            const int gx = (up[r] + 2 * mid[r] + down[r]) - (up[l] + 2 * mid[l] + down[l]);
+            const int gy = (down[l] + 2 * down[x] + down[r]) - (up[l] + 2 * up[x] + up[r]);
+            dx_[row + std::size_t(x)] = std::int16_t(gx);
+            dy_[row + std::size_t(x)] = std::int16_t(gy);
+            magnitude_[row + std::size_t(x)] = std::abs(gx) + std::abs(gy);
+        }
+    }
+
+    // Non-maximum suppression along the quantised gradient direction; outside the image the
+    // magnitude counts as 0. state: 0 = no edge, 1 = weak (above low), 2 = strong (above high).
+    const int low = options.cannyLow;
+    const int high = options.cannyHigh;
+    auto mag = [&](int x, int y) -> int {
+        if (x < 0 || y < 0 || x >= w || y >= h) return 0;
+        return magnitude_[std::size_t(y) * std::size_t(w) + std::size_t(x)];
+    };
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+            const int m = magnitude_[i];
+            state_[i] = 0;
+            if (m <= low) continue;
+            const int xs = dx_[i];
+            const int ys = dy_[i];
+            const int ax = std::abs(xs);
+            const int ay = std::abs(ys) << kShift;
+            const int tg22x = ax * kTan22;
+            bool isMax;
+            if (ay < tg22x) {
+                isMax = m > mag(x - 1, y) && m >= mag(x + 1, y);
+            } else {
+                const int tg67x = tg22x + (ax << (kShift + 1));
+                if (ay > tg67x) {
+                    isMax = m > mag(x, y - 1) && m >= mag(x, y + 1);
+                } else {
+                    const int s = (xs ^ ys) < 0 ? -1 : 1;
+                    isMax = m > mag(x - s, y - 1) && m > mag(x + s, y + 1);
+                }
+            }
+            if (!isMax) continue;
+            state_[i] = m > high ? 2 : 1;
+            if (state_[i] == 2) stack_.push_back(int(i));
+        }
+    }
+
+    // Hysteresis: grow strong edges into 8-connected weak ones.
+    while (!stack_.empty()) {
+        const int i = stack_.back();
+        stack_.pop_back();
+        const int x = i % w;
+        const int y = i / w;
+        for (int ny = y - 1; ny <= y + 1; ++ny) {
+            if (ny < 0 || ny >= h) continue;
+            for (int nx = x - 1; nx <= x + 1; ++nx) {
+                if (nx < 0 || nx >= w) continue;
+                const std::size_t j = std::size_t(ny) * std::size_t(w) + std::size_t(nx);
+                if (state_[j] == 1) {
+                    state_[j] = 2;
+                    stack_.push_back(int(j));
+                }
+            }
+        }
+    }
+
+    edges.create(h, w, CV_8UC1);
+    for (int y = 0; y < h; ++y) {
+        std::uint8_t* out = edges.ptr<std::uint8_t>(y);
+        const std::uint8_t* st = state_.data() + std::size_t(y) * std::size_t(w);
+        for (int x = 0; x < w; ++x) out[x] = st[x] == 2 ? 255 : 0;
+    }
+}
+
+}  // namespace omnitune

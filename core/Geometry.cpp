@@ -1,0 +1,47 @@
+#include "Geometry.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace omnitune {
+
+Geometry::Geometry(const GeometryOptions& options, const cv::Mat& mask) : options_(options)
+{
+    const int w = options.imageWidth;
+    const int h = options.imageHeight;
+    if (w <= 0 || h <= 0)
+        throw std::invalid_argument("geometry.image_width/height must be positive");
+    if (!mask.empty() && (mask.cols != w || mask.rows != h || mask.type() != CV_8UC1))
+        throw std::invalid_argument("mask is " + std::to_string(mask.cols) + "x" + std::to_string(mask.rows) +
+                                    " but geometry.image_width/height is " + std::to_string(w) + "x" +
+                                    std::to_string(h) + " (the mask must be one 8-bit channel of that size)");
+    used_.create(h, w, CV_8UC1);
+    distance_.create(h, w, CV_32FC1);
+    const double inner2 = options.innerRadius * options.innerRadius;
+    const double outer2 = options.outerRadius * options.outerRadius;
+    for (int y = 0; y < h; ++y) {
+        float* dist = distance_.ptr<float>(y);
+        std::uint8_t* used = used_.ptr<std::uint8_t>(y);
+        const std::uint8_t* m = mask.empty() ? nullptr : mask.ptr<std::uint8_t>(y);
+        const double dy = y - options.centerY;
+        int spanStart = -1;
+        for (int x = 0; x < w; ++x) {
+            const double dx = x - options.centerX;
+            const double d2 = dx * dx + dy * dy;
+            dist[x] = float(std::sqrt(d2));
+            const bool inRing = d2 >= inner2 && d2 <= outer2;
+            used[x] = (inRing && (!m || m[x] != 0)) ? 255 : 0;
+            if (used[x]) {
+                usedPixels_.push_back(y * w + x);
+                if (spanStart < 0) spanStart = x;
+            } else if (spanStart >= 0) {
+                spans_.push_back({y, spanStart, x});
+                spanStart = -1;
+            }
+        }
+        if (spanStart >= 0) spans_.push_back({y, spanStart, w});
+    }
+}
+
+}  // namespace omnitune

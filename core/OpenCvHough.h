@@ -1,0 +1,38 @@
+#pragma once
+// Thesis section 4.2: circles from cv::HoughCircles (HOUGH_GRADIENT) on the binary image, a
+// circle larger than the ball would be at its distance rejected.
+#include "BallCandidate.h"
+
+#include <opencv2/core.hpp>
+
+#include <vector>
+
+namespace omnitune {
+
+class Geometry;
+class BallModel;
+
+struct OpenCvHoughOptions {
+    double dp = 2.0;            // inverse accumulator resolution (2: half width and height), 1..4
+    double minDist = 12.0;      // px between two circle centres; smaller: neighbours duplicate, larger: balls missed
+    double cannyHigh = 180.0;   // HoughCircles' internal Canny high threshold (low is half of it)
+    double accThreshold = 20.0; // accumulator votes a centre needs; lower: more (false) circles
+    int minRadius = 3;          // px
+    int maxRadius = 25;         // px
+    // A circle is rejected when radius > expected * maxRadiusRatio. The thesis rejects any circle
+    // above the expected radius (1.0); a little slack absorbs HoughCircles' radius rounding.
+    double maxRadiusRatio = 1.15;
+    int maxCircles = 1;         // circles validated per frame, strongest first (thesis: 1)
+};
+
+class OpenCvHough {
+public:
+    // Appends up to maxCircles candidates; those too large are marked RadiusTooLarge.
+    void process(const cv::Mat& binary, const OpenCvHoughOptions& options, const Geometry& geometry,
+                 const BallModel& ball, std::vector<BallCandidate>& candidates);
+
+private:
+    std::vector<cv::Vec3f> circles_;
+};
+
+}  // namespace omnitune

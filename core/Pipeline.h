@@ -1,0 +1,37 @@
+#pragma once
+// The detector: one call per frame, from the camera image to the ball in metres (thesis
+// ch. 4). Holds every buffer between frames, so a warm pipeline allocates nothing on the
+// specific path (cv::HoughCircles allocates inside OpenCV on the opencv/combined paths).
+#include "Config.h"
+#include "PipelineResult.h"
+
+#include <memory>
+#include <string>
+
+namespace omnitune {
+
+class Pipeline {
+public:
+    // Throws std::invalid_argument naming the key when the config is not usable.
+    explicit Pipeline(const Config& config);
+    ~Pipeline();
+    Pipeline(const Pipeline&) = delete;
+    Pipeline& operator=(const Pipeline&) = delete;
+
+    // Rebuilds the tables that depend on the config (LUT, geometry, Hough offsets).
+    void setConfig(const Config& config);
+    const Config& config() const;
+
+    // Processes one frame into `result` (reuse the same result object between calls).
+    // A frame of the wrong size or type sets result.error and leaves the rest empty.
+    void process(const cv::Mat& frame, PixelFormat format, PipelineResult& result, bool wantStageImages = false);
+
+    // Forgets running statistics (none today); here so every stage has the same shape.
+    void reset();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace omnitune

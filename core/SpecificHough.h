@@ -1,0 +1,59 @@
+#pragma once
+// The specific circular Hough transform of thesis section 4.1: each edge pixel votes on the
+// circle of the radius the ball would have at its distance from the robot; maxima of the 3x3
+// sum give ball candidates, one absolute maximum or one per radial area (Fig. 4.10, 4.11).
+#include "BallCandidate.h"
+
+#include <opencv2/core.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace omnitune {
+
+class Geometry;
+class BallModel;
+
+struct SpecificHoughOptions {
+    double nearRobotRadius = 70.0;  // px; votes for centres closer than this count nearRobotWeight
+    int nearRobotWeight = 2;        // votes per vote near the robot (a ball there is half hidden)
+    bool multipleMaxima = true;     // one maximum per radial area (true) or one absolute (false)
+    // Upper bounds of the radial areas, px, increasing. Area i spans (bound[i-1], bound[i]].
+    std::vector<double> areaBounds = {70, 105, 140, 170, 205, 240};
+    int minAccumulator = 1;         // a maximum whose 3x3 sum is below this is no candidate
+};
+
+class SpecificHough {
+public:
+    SpecificHough() = default;
+    // Precomputes the circle offsets per radius, the vote weight image and the area index of
+    // every pixel. Throws std::invalid_argument on an inconsistent configuration.
+    SpecificHough(const SpecificHoughOptions& options, const Geometry& geometry, const BallModel& ball);
+
+    // `edges`: CV_8UC1 edge image; `binary`: CV_8UC1, 0 = non-green (where a centre may lie).
+    // Fills the vote accumulator, its 3x3 sums and appends the candidates (no allocation once
+    // `candidates` has capacity).
+    void process(const cv::Mat& edges, const cv::Mat& binary, std::vector<BallCandidate>& candidates);
+
+    // CV_16UC1 votes and CV_32SC1 3x3 sums of the last process() call.
+    const cv::Mat& accumulator() const { return accumulator_; }
+    const cv::Mat& sums() const { return sums_; }
+    int areaCount() const { return int(options_.areaBounds.size()); }
+
+private:
+    struct Offset { int dx; int dy; };
+
+    SpecificHoughOptions options_;
+    const Geometry* geometry_ = nullptr;
+    const BallModel* ball_ = nullptr;
+    std::vector<std::vector<Offset>> circles_;  // by radius
+    cv::Mat weight_;    // CV_8UC1 votes a centre gets: 0 outside the processed ring
+    cv::Mat areaIndex_; // CV_8UC1 radial area of each pixel, 255 = none
+    cv::Mat radius_;    // CV_8UC1 vote radius for an edge pixel at each position
+    cv::Mat accumulator_;
+    cv::Mat sums_;
+    std::vector<std::int32_t> rowSums_;
+    std::vector<BallCandidate> best_;
+};
+
+}  // namespace omnitune

@@ -1,0 +1,89 @@
+#include "Validation.h"
+
+#include "BallModel.h"
+#include "ColorClass.h"
+#include "Geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace omnitune {
+
+namespace {
+
+// Circle search rays: about one per pixel of circumference, never fewer than 16.
+int rayCount(double radius) { return std::max(16, int(std::ceil(2.0 * M_PI * radius))); }
+
+// Rays whose whole search band lies on unprocessed pixels (robot body, rods) say nothing about
+// the shape; they are left out. Under this share of usable rays the circle is not judged.
+constexpr double kMinUsableRayShare = 0.25;
+
+}  // namespace
+
+ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,
+                             const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options)
+{
+    ValidationScores s;
+    const int w = classes.cols;
+    const int h = classes.rows;
+    const int half = squareSide / 2;
+    int used = 0;
+    int green = 0;
+    int black = 0;
+    for (int yy = std::max(0, y - half); yy <= std::min(h - 1, y + half); ++yy) {
+        const std::uint8_t* c = classes.ptr<std::uint8_t>(yy);
+        const std::uint8_t* u = geometry.usedMask().ptr<std::uint8_t>(yy);
+        for (int xx = std::max(0, x - half); xx <= std::min(w - 1, x + half); ++xx) {
+            if (!u[xx]) continue;
+            ++used;
+            green += c[xx] == std::uint8_t(ColorClass::Green);
+            black += c[xx] == std::uint8_t(ColorClass::Black);
+        }
+    }
+    if (used > 0) {
+        s.nonGreenPct = 100.0 * (used - green) / used;
+        s.nonBlackPct = 100.0 * (used - black) / used;
+    }
+
+    const double band = std::max(options.radiusTolerance * radius, options.minRadiusBandPx);
+    const double rMin = std::max(0.5, radius - band);
+    const double rMax = radius + band;
+    const int rays = rayCount(radius);
+    int usable = 0;
+    int hits = 0;
+    for (int i = 0; i < rays; ++i) {
+        const double a = 2.0 * M_PI * i / rays;
+        const double ca = std::cos(a);
+        const double sa = std::sin(a);
+        bool anyUsed = false;
+        bool hit = false;
+        for (double r = rMin; r <= rMax + 1e-9 && !hit; r += 0.5) {
+            const int px = int(std::lround(x + r * ca));
+            const int py = int(std::lround(y + r * sa));
+            if (px < 0 || py < 0 || px >= w || py >= h || !geometry.isUsed(px, py)) continue;
+            anyUsed = true;
+            hit = edges.ptr<std::uint8_t>(py)[px] != 0;
+        }
+        usable += anyUsed;
+        hits += hit;
+    }
+    if (usable >= kMinUsableRayShare * rays) s.circularityPct = 100.0 * hits / usable;
+    return s;
+}
+
+void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry,
+                       const BallModel& ball, const ValidationOptions& options)
+{
+    CV_Assert(classes.type() == CV_8UC1 && edges.type() == CV_8UC1 && classes.size() == edges.size());
+    c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, ball.squareSizeAt(c.distancePx), classes, edges,
+                           geometry, options);
+    if (c.rejected != RejectReason::None) return;  // already out (outside the area, too large)
+    if (c.scores.nonGreenPct < options.minNonGreenPct)
+        c.rejected = RejectReason::NonGreen;
+    else if (c.scores.nonBlackPct < options.minNonBlackPct)
+        c.rejected = RejectReason::NonBlack;
+    else if (c.scores.circularityPct < options.minCircularityPct)
+        c.rejected = RejectReason::Circularity;
+}
+
+}  // namespace omnitune
