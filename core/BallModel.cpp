@@ -5,15 +5,6 @@
 
 namespace omnitune {
 
-BallModel::BallModel(const BallModelOptions& options, int maxDistance) : options_(options)
-{
-    radiusTable_.resize(std::size_t(std::max(maxDistance, 0) + 1));
-    for (std::size_t d = 0; d < radiusTable_.size(); ++d) {
-        radiusTable_[d] = int(std::lround(radiusAt(double(d))));
-        maxRadiusPx_ = std::max(maxRadiusPx_, radiusTable_[d]);
-    }
-}
-
 double BallModel::radiusAt(double d) const
 {
     const double r = options_.c0 + options_.c1 * d + options_.c2 * d * d;

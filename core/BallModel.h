@@ -2,7 +2,6 @@
 // Expected ball radius in the image as a function of the distance to the robot centre
 // (thesis Fig. 4.7: a 2nd-order polynomial fitted to measurements), and the side of the
 // square that holds the ball (`ballSquareSize`).
-#include <vector>
 
 namespace omnitune {
 
@@ -21,27 +20,15 @@ struct BallModelOptions {
 class BallModel {
 public:
     BallModel() = default;
-    // Tables the model for every integer distance in [0, maxDistance].
-    BallModel(const BallModelOptions& options, int maxDistance);
+    explicit BallModel(const BallModelOptions& options) : options_(options) {}
 
     double radiusAt(double distancePx) const;
-    // Rounded radius used for voting, from the table.
-    int radiusIndexAt(double distancePx) const
-    {
-        int d = int(distancePx + 0.5);
-        if (d < 0) d = 0;
-        if (d >= int(radiusTable_.size())) d = int(radiusTable_.size()) - 1;
-        return radiusTable_[std::size_t(d)];
-    }
     // Odd side length (px) of the square that holds a ball at this distance.
     int squareSizeAt(double distancePx) const;
-    int maxRadiusPx() const { return maxRadiusPx_; }
     const BallModelOptions& options() const { return options_; }
 
 private:
     BallModelOptions options_;
-    std::vector<int> radiusTable_;
-    int maxRadiusPx_ = 0;
 };
 
 }  // namespace omnitune

@@ -163,6 +163,9 @@ std::vector<ConfigKey> buildSchema()
                         [](auto& c) -> auto& { return c.hough.areaBounds; }));
     s.push_back(intKey("hough.min_accumulator", "votes", 1, 100000, false, "A maximum whose 3x3 vote sum is below this gives no candidate; higher: fewer, stronger candidates",
                        [](auto& c) -> auto& { return c.hough.minAccumulator; }));
+    s.push_back(boolKey("hough.radius_at_centre", false,
+                        "Vote with the radius expected at the candidate centre's distance; 0: at the edge pixel's (thesis' text, shifts maxima outwards)",
+                        [](auto& c) -> auto& { return c.hough.radiusAtCentre; }));
 
     // OpenCV Hough
     s.push_back(doubleKey("opencv_hough.dp", "ratio", 1, 4, true, "Inverse accumulator resolution of cv::HoughCircles (2: half width and height)",
@@ -178,7 +181,7 @@ std::vector<ConfigKey> buildSchema()
     s.push_back(intKey("opencv_hough.max_radius", "px", 1, 200, true, "Largest circle searched (the ball engaged in the robot)",
                        [](auto& c) -> auto& { return c.opencvHough.maxRadius; }));
     s.push_back(doubleKey("opencv_hough.max_radius_ratio", "ratio", 0.5, 3, false,
-                          "A circle above expected radius x this is rejected (thesis: 1.0; slack absorbs HoughCircles' radius rounding)",
+                          "A circle above expected radius x this is rejected (thesis: 1.0; HoughCircles overestimates a true ball's radius by up to ~1.23)",
                           [](auto& c) -> auto& { return c.opencvHough.maxRadiusRatio; }));
     s.push_back(intKey("opencv_hough.max_circles", "circles", 1, 50, true, "Circles validated per frame, strongest first (thesis: the first)",
                        [](auto& c) -> auto& { return c.opencvHough.maxCircles; }));
@@ -349,7 +352,7 @@ std::string configSchemaMarkdown()
     const Config defaults;
     std::ostringstream md;
     md << "# config.yml reference\n\n"
-       << "<!-- Generated from core/ConfigSchema.cpp by `omnitune-detect --config-doc`; do not edit by hand.\n"
+       << "<!-- Generated from core/ConfigSchema.cpp by `omnitune-config --doc`; do not edit by hand.\n"
        << "     The test core/config_schema fails when this file is out of date. -->\n\n"
        << "`config.yml` is written and read with OpenCV's `cv::FileStorage` (YAML), so the robot needs nothing\n"
        << "beyond OpenCV to read it. It starts with `schema: " << kConfigSchemaVersion << "`; a file with another\n"
@@ -357,7 +360,7 @@ std::string configSchemaMarkdown()
        << "at the end: a saved file without the end marker was cut short and is refused. A missing key takes its\n"
        << "default with a warning; an unknown key is reported as a warning (a typo?). Saving writes a temporary\n"
        << "file and renames it over `config.yml`, keeping the previous file as `config.yml.bak`.\n\n"
-       << "Defaults marked **(thesis)** are the numbers published in the thesis (chapter 4); the others are\n"
+       << "Defaults marked (thesis) are the numbers published in the thesis (chapter 4); the others are\n"
        << "OmniTune's choices for the bundled simulated camera and should be tuned per robot.\n";
     for (const auto& [name, text] : sections) {
         md << "\n## " << name << "\n\n" << text << "\n\n"

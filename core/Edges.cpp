@@ -1,6 +1,7 @@
 #include "Edges.h"
 
 #include "ColorClass.h"
+#include "FillBytes.h"
 #include "Geometry.h"
 
 #include <cstdlib>
@@ -11,7 +12,7 @@ void makeBinary(const cv::Mat& classes, const Geometry& geometry, cv::Mat& binar
 {
     CV_Assert(classes.type() == CV_8UC1);
     binary.create(classes.size(), CV_8UC1);
-    binary.setTo(255);
+    fillBytes(binary, 255);
     const auto green = std::uint8_t(ColorClass::Green);
     for (const RowSpan& s : geometry.spans()) {
         const std::uint8_t* in = classes.ptr<std::uint8_t>(s.y);

@@ -1,6 +1,7 @@
 #include "Pipeline.h"
 
 #include "ConfigSchema.h"
+#include "FillBytes.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -20,14 +21,6 @@ double msSince(Clock::time_point& t)
     const double ms = std::chrono::duration<double, std::milli>(now - t).count();
     t = now;
     return ms;
-}
-
-// Farthest pixel from the centre: the ball model is tabled up to there.
-int maxDistance(const GeometryOptions& g)
-{
-    const double dx = std::max(g.centerX, g.imageWidth - g.centerX);
-    const double dy = std::max(g.centerY, g.imageHeight - g.centerY);
-    return int(std::ceil(std::hypot(dx, dy))) + 1;
 }
 
 // The chosen ball: the valid candidate with the best circularity, then the most votes.
@@ -91,7 +84,7 @@ void Pipeline::setConfig(const Config& config)
     next->lut.compile(config.colors);
     next->geometry = Geometry(config.geometry, config.mask);
     next->distanceMap = DistanceMap(config.distanceMap);
-    next->ball = BallModel(config.ball, maxDistance(config.geometry));
+    next->ball = BallModel(config.ball);
     next->hough = SpecificHough(config.hough, next->geometry, next->ball);
     impl_ = std::move(next);  // only a fully built pipeline replaces the old one
 }
@@ -129,7 +122,7 @@ void Pipeline::process(const cv::Mat& frame, PixelFormat format, PipelineResult&
     auto start = Clock::now();
     auto t = start;
     r.classes.create(size, CV_8UC1);
-    r.classes.setTo(0);
+    fillBytes(r.classes, 0);
     p.lut.segment(frame, format, p.geometry.spans(), r.classes);
     r.timings.segmentMs = msSince(t);
     makeBinary(r.classes, p.geometry, p.binary);

@@ -1,43 +1,15 @@
 #include "SpecificHough.h"
 
 #include "BallModel.h"
+#include "FillBytes.h"
 #include "Geometry.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <stdexcept>
 
 namespace omnitune {
-
-namespace {
-
-// Points of a digital circle of radius r (midpoint algorithm), each once.
-std::vector<std::pair<int, int>> circlePoints(int r)
-{
-    std::vector<std::pair<int, int>> pts;
-    if (r <= 0) {
-        pts.emplace_back(0, 0);
-        return pts;
-    }
-    int x = r;
-    int y = 0;
-    int err = 1 - r;
-    while (x >= y) {
-        const std::pair<int, int> oct[8] = {{x, y}, {y, x}, {-y, x}, {-x, y}, {-x, -y}, {-y, -x}, {y, -x}, {x, -y}};
-        for (const auto& p : oct)
-            if (std::find(pts.begin(), pts.end(), p) == pts.end()) pts.push_back(p);
-        ++y;
-        if (err < 0) {
-            err += 2 * y + 1;
-        } else {
-            --x;
-            err += 2 * (y - x) + 1;
-        }
-    }
-    return pts;
-}
-
-}  // namespace
 
 SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry& geometry, const BallModel& ball)
     : options_(options), geometry_(&geometry), ball_(&ball)
@@ -49,21 +21,33 @@ SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry
     if (options.nearRobotWeight < 1 || options.nearRobotWeight > 10)
         throw std::invalid_argument("hough.near_robot_weight must be 1..10");
 
-    circles_.resize(std::size_t(ball.maxRadiusPx()) + 1);
-    for (int r = 0; r <= ball.maxRadiusPx(); ++r)
-        for (const auto& [dx, dy] : circlePoints(r)) circles_[std::size_t(r)].push_back({dx, dy});
+    // For each edge distance d, the centres a ball edge there may belong to: in direction phi
+    // from the ray, at the radius r solving r = R(d + r cos phi), about one point per pixel of
+    // arc. A few fixed-point steps converge: |dR/dd| is far below 1 for any sane ball model.
+    const int maxEdgeDistance = int(std::ceil(geometry.options().outerRadius)) + 1;
+    loci_.resize(std::size_t(maxEdgeDistance) + 1);
+    for (int d = 0; d <= maxEdgeDistance; ++d) {
+        const double r0 = ball.radiusAt(d);
+        const int n = std::max(8, int(std::ceil(2.0 * M_PI * r0)));
+        auto& locus = loci_[std::size_t(d)];
+        for (int k = 0; k < n; ++k) {
+            const double phi = 2.0 * M_PI * k / n;
+            double r = r0;
+            for (int it = 0; it < 6 && options.radiusAtCentre; ++it)
+                r = ball.radiusAt(std::max(0.0, d + r * std::cos(phi)));
+            locus.push_back({float(r * std::cos(phi)), float(r * std::sin(phi))});
+        }
+    }
 
     const cv::Size size = geometry.imageSize();
     weight_.create(size, CV_8UC1);
     areaIndex_.create(size, CV_8UC1);
-    radius_.create(size, CV_8UC1);
     for (int y = 0; y < size.height; ++y) {
         for (int x = 0; x < size.width; ++x) {
             const double d = geometry.distanceAt(x, y);
             const bool used = geometry.isUsed(x, y);
             weight_.at<std::uint8_t>(y, x) =
                 used ? std::uint8_t(d < options.nearRobotRadius ? options.nearRobotWeight : 1) : 0;
-            radius_.at<std::uint8_t>(y, x) = std::uint8_t(ball.radiusIndexAt(d));
             std::uint8_t area = 255;
             if (used) {
                 if (!options.multipleMaxima) {
@@ -90,17 +74,29 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
     const int w = size.width;
     const int h = size.height;
 
-    // Votes: every edge pixel adds its weight on the circle of its expected radius, at centres
-    // that are processed and not green (binary 0). weight & ~binary is weight where binary is 0.
-    accumulator_.setTo(0);
+    // Votes: every edge pixel adds its weight on its locus, at centres that are processed and
+    // not green (binary 0): weight & ~binary is the weight where binary is 0, else 0.
+    const double cx0 = geometry_->options().centerX;
+    const double cy0 = geometry_->options().centerY;
+    fillBytes(accumulator_, 0);
     for (const RowSpan& s : geometry_->spans()) {
         const std::uint8_t* e = edges.ptr<std::uint8_t>(s.y);
-        const std::uint8_t* rad = radius_.ptr<std::uint8_t>(s.y);
+        const float* dist = geometry_->distance().ptr<float>(s.y);
         for (int x = s.x0; x < s.x1; ++x) {
-            if (!e[x]) continue;
-            for (const Offset& o : circles_[rad[x]]) {
-                const int cx = x + o.dx;
-                const int cy = s.y + o.dy;
+            if (!e[x] || dist[x] < 0.5f) continue;
+            const float nx = float((x - cx0) / dist[x]);  // unit ray from the robot centre
+            const float ny = float((s.y - cy0) / dist[x]);
+            const auto& locus = loci_[std::min(std::size_t(cvRound(dist[x])), loci_.size() - 1)];
+            int lastDx = INT_MIN;
+            int lastDy = INT_MIN;
+            for (const LocusPoint& p : locus) {
+                const int dx = cvRound(p.along * nx - p.across * ny);
+                const int dy = cvRound(p.along * ny + p.across * nx);
+                if (dx == lastDx && dy == lastDy) continue;  // neighbouring samples, same pixel
+                lastDx = dx;
+                lastDy = dy;
+                const int cx = x + dx;
+                const int cy = s.y + dy;
                 if (unsigned(cx) >= unsigned(w) || unsigned(cy) >= unsigned(h)) continue;
                 const std::uint8_t vote = weight_.ptr<std::uint8_t>(cy)[cx] & std::uint8_t(~binary.ptr<std::uint8_t>(cy)[cx]);
                 accumulator_.ptr<std::uint16_t>(cy)[cx] += vote;
@@ -116,8 +112,10 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
         for (int x = 1; x < w - 1; ++x) out[x] = a[x - 1] + a[x] + a[x + 1];
         return out;
     };
-    sums_.row(0).setTo(0);
-    sums_.row(h - 1).setTo(0);
+    cv::Mat top = sums_.row(0);
+    cv::Mat bottom = sums_.row(h - 1);
+    fillBytes(top, 0);
+    fillBytes(bottom, 0);
     if (h >= 3) {
         rowSum(0);
         rowSum(1);

@@ -1,7 +1,14 @@
 #pragma once
-// The specific circular Hough transform of thesis section 4.1: each edge pixel votes on the
-// circle of the radius the ball would have at its distance from the robot; maxima of the 3x3
-// sum give ball candidates, one absolute maximum or one per radial area (Fig. 4.10, 4.11).
+// The specific circular Hough transform of thesis section 4.1: each edge pixel votes for the
+// centres of the balls it could belong to, knowing the ball radius at each distance from the
+// robot; maxima of the 3x3 sum give ball candidates, one absolute maximum or one per radial
+// area (Fig. 4.10, 4.11).
+//
+// Where we differ from the thesis' text: by default an edge pixel votes on the curve of
+// centres c with |c - e| = r(|c|), the radius expected at the *centre's* distance, not on the
+// circle of the radius at the edge pixel's own distance. The literal rule shifts every maximum
+// outwards (the near side's edges see a bigger radius, the far side's a smaller one): 3 px at
+// 80 px from the centre with the default model. `radiusAtCentre = false` restores it.
 #include "BallCandidate.h"
 
 #include <opencv2/core.hpp>
@@ -21,6 +28,7 @@ struct SpecificHoughOptions {
     // Upper bounds of the radial areas, px, increasing. Area i spans (bound[i-1], bound[i]].
     std::vector<double> areaBounds = {70, 105, 140, 170, 205, 240};
     int minAccumulator = 1;         // a maximum whose 3x3 sum is below this is no candidate
+    bool radiusAtCentre = true;     // vote with the radius at the centre's distance (see above)
 };
 
 class SpecificHough {
@@ -41,15 +49,16 @@ public:
     int areaCount() const { return int(options_.areaBounds.size()); }
 
 private:
-    struct Offset { int dx; int dy; };
+    // A vote position relative to an edge pixel: `along` the ray from the robot centre through
+    // the pixel and `across` it, px.
+    struct LocusPoint { float along; float across; };
 
     SpecificHoughOptions options_;
     const Geometry* geometry_ = nullptr;
     const BallModel* ball_ = nullptr;
-    std::vector<std::vector<Offset>> circles_;  // by radius
+    std::vector<std::vector<LocusPoint>> loci_;  // by the edge pixel's rounded distance
     cv::Mat weight_;    // CV_8UC1 votes a centre gets: 0 outside the processed ring
     cv::Mat areaIndex_; // CV_8UC1 radial area of each pixel, 255 = none
-    cv::Mat radius_;    // CV_8UC1 vote radius for an edge pixel at each position
     cv::Mat accumulator_;
     cv::Mat sums_;
     std::vector<std::int32_t> rowSums_;

@@ -5,6 +5,7 @@
 #include "Geometry.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 
 namespace omnitune {
@@ -51,18 +52,30 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
     const int rays = rayCount(radius);
     int usable = 0;
     int hits = 0;
+    auto edgeAt = [&](int px, int py, bool& anyUsed) {
+        if (px < 0 || py < 0 || px >= w || py >= h || !geometry.isUsed(px, py)) return false;
+        anyUsed = true;
+        return edges.ptr<std::uint8_t>(py)[px] != 0;
+    };
     for (int i = 0; i < rays; ++i) {
         const double a = 2.0 * M_PI * i / rays;
         const double ca = std::cos(a);
         const double sa = std::sin(a);
         bool anyUsed = false;
         bool hit = false;
+        int lastX = INT_MIN;
+        int lastY = INT_MIN;
         for (double r = rMin; r <= rMax + 1e-9 && !hit; r += 0.5) {
             const int px = int(std::lround(x + r * ca));
             const int py = int(std::lround(y + r * sa));
-            if (px < 0 || py < 0 || px >= w || py >= h || !geometry.isUsed(px, py)) continue;
-            anyUsed = true;
-            hit = edges.ptr<std::uint8_t>(py)[px] != 0;
+            if (px == lastX && py == lastY) continue;
+            // A diagonal step could slip between the pixels of an 8-connected edge: look at
+            // the two pixels it cuts across too, so that the ray is 4-connected.
+            if (lastX != INT_MIN && px != lastX && py != lastY)
+                hit = edgeAt(px, lastY, anyUsed) || edgeAt(lastX, py, anyUsed);
+            hit = hit || edgeAt(px, py, anyUsed);
+            lastX = px;
+            lastY = py;
         }
         usable += anyUsed;
         hits += hit;

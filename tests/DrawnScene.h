@@ -1,0 +1,74 @@
+#pragma once
+// Hand-checkable test scenes for the core tests: a flat green field with shapes drawn at
+// known places, in the geometry of a Config. (Realistic scenes come from calib's simulator.)
+#include "BallModel.h"
+#include "Config.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+
+namespace omnitune::test {
+
+inline const cv::Scalar kGreen(40, 140, 40);
+inline const cv::Scalar kWhite(235, 235, 235);
+inline const cv::Scalar kBlack(20, 20, 20);
+inline const cv::Scalar kOrange(20, 110, 240);
+
+inline cv::Mat greenField(const Config& c)
+{
+    return cv::Mat(c.geometry.imageHeight, c.geometry.imageWidth, CV_8UC3, kGreen);
+}
+
+// Image point at `distance` px from the robot centre, `angleDeg` counter-clockwise from +x.
+inline cv::Point2d pointAt(const Config& c, double distance, double angleDeg)
+{
+    const double a = angleDeg * M_PI / 180.0;
+    return {c.geometry.centerX + distance * std::cos(a), c.geometry.centerY - distance * std::sin(a)};
+}
+
+inline double expectedRadius(const Config& c, double distance)
+{
+    return BallModel(c.ball).radiusAt(distance);
+}
+
+// A filled disc of the ball model's radius at the given distance and angle; returns its centre.
+inline cv::Point drawBall(cv::Mat& img, const Config& c, double distance, double angleDeg,
+                          const cv::Scalar& color = kOrange)
+{
+    const cv::Point2d p = pointAt(c, distance, angleDeg);
+    const cv::Point centre(int(std::lround(p.x)), int(std::lround(p.y)));
+    cv::circle(img, centre, int(std::lround(expectedRadius(c, distance))), color, cv::FILLED, cv::LINE_8);
+    return centre;
+}
+
+}  // namespace omnitune::test
+
+#include "ColorLut.h"
+#include "Edges.h"
+#include "Geometry.h"
+
+namespace omnitune::test {
+
+// The stages before the Hough transform, run by hand on a drawn frame.
+struct EdgeStages {
+    Geometry geometry;
+    BallModel ball;
+    cv::Mat classes;
+    cv::Mat binary;
+    cv::Mat edges;
+
+    EdgeStages(const Config& c, const cv::Mat& frame)
+        : geometry(c.geometry, c.mask), ball(c.ball)
+    {
+        const ColorLut lut(c.colors);
+        classes = cv::Mat(frame.size(), CV_8UC1, cv::Scalar(0));
+        lut.segment(frame, PixelFormat::Bgr8, geometry.spans(), classes);
+        makeBinary(classes, geometry, binary);
+        CannyDetector canny;
+        canny.detect(binary, c.edges, edges);
+        cv::bitwise_and(edges, geometry.usedMask(), edges);
+    }
+};
+
+}  // namespace omnitune::test

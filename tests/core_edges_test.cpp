@@ -1,0 +1,86 @@
+// The binary (green / non-green) image and the Canny edge detector.
+#include "DrawnScene.h"
+
+#include <QtTest>
+
+using namespace omnitune;
+using namespace omnitune::test;
+
+class EdgesTest : public QObject {
+    Q_OBJECT
+private slots:
+    void binaryIsGreenWhiteElseBlack()
+    {
+        const Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point ball = drawBall(frame, c, 150, 30);
+        cv::line(frame, pointAt(c, 100, 200), pointAt(c, 200, 200), kWhite, 4);
+        const EdgeStages s(c, frame);
+        QCOMPARE(int(s.binary.at<uchar>(ball)), 0);                        // ball: non-green
+        QCOMPARE(int(s.binary.at<uchar>(pointAt(c, 150, 200))), 0);        // line: non-green
+        QCOMPARE(int(s.binary.at<uchar>(pointAt(c, 150, 100))), 255);      // carpet
+        QCOMPARE(int(s.binary.at<uchar>(int(c.geometry.centerY), int(c.geometry.centerX))), 255);  // robot: unused
+        QCOMPARE(int(s.binary.at<uchar>(0, 0)), 255);                      // outside the mirror
+    }
+
+    // Our allocation-free Canny must give exactly OpenCV's result (3x3 Sobel, L1 norm).
+    void cannyMatchesOpenCv_data()
+    {
+        QTest::addColumn<int>("seed");
+        QTest::addColumn<int>("low");
+        QTest::addColumn<int>("high");
+        QTest::newRow("thesis thresholds, blobs") << 1 << 60 << 180;
+        QTest::newRow("thesis thresholds, other blobs") << 2 << 60 << 180;
+        QTest::newRow("low thresholds") << 3 << 10 << 30;
+        QTest::newRow("high thresholds") << 4 << 300 << 900;
+    }
+    void cannyMatchesOpenCv()
+    {
+        QFETCH(int, seed);
+        QFETCH(int, low);
+        QFETCH(int, high);
+        cv::RNG rng{uint64(seed)};
+        cv::Mat img(120, 160, CV_8UC1, cv::Scalar(255));
+        for (int i = 0; i < 25; ++i)
+            cv::circle(img, cv::Point(rng.uniform(0, 160), rng.uniform(0, 120)), rng.uniform(2, 20),
+                       cv::Scalar(i % 3 == 0 ? 0 : rng.uniform(0, 256)), cv::FILLED);
+        cv::line(img, cv::Point(0, 10), cv::Point(159, 100), cv::Scalar(0), 3);
+        cv::Mat ours;
+        CannyDetector canny;
+        canny.detect(img, EdgeOptions{low, high}, ours);
+        cv::Mat reference;
+        cv::Canny(img, reference, low, high, 3, false);
+        QCOMPARE(cv::countNonZero(ours != reference), 0);
+        QVERIFY(cv::countNonZero(ours) > 100);
+    }
+
+    // The ball's edge is a closed 8-connected ring one pixel from its border: a 4-connected
+    // fill from the centre stays inside it.
+    void ballGivesAClosedRingOfEdges()
+    {
+        const Config c;
+        cv::Mat frame = greenField(c);
+        const double d = 150;
+        const cv::Point ball = drawBall(frame, c, d, 30);
+        const EdgeStages s(c, frame);
+        const double r = expectedRadius(c, d);
+        QCOMPARE(int(s.edges.at<uchar>(ball)), 0);  // nothing inside the ball
+        cv::Mat fill = s.edges.clone();
+        const int inside = cv::floodFill(fill, ball, cv::Scalar(128), nullptr, 0, 0, 4);
+        QVERIFY2(inside > M_PI * (r - 2) * (r - 2) && inside < M_PI * (r + 1) * (r + 1), qPrintable(QString::number(inside)));
+        // ... and every edge pixel lies within a pixel of the drawn border.
+        for (int y = 0; y < s.edges.rows; ++y)
+            for (int x = 0; x < s.edges.cols; ++x)
+                if (s.edges.at<uchar>(y, x)) QVERIFY(std::abs(std::hypot(x - ball.x, y - ball.y) - std::lround(r)) <= 1.5);
+    }
+
+    void noEdgesAtTheMaskBorder()
+    {
+        const Config c;  // uniform carpet: the robot body and mirror rim must not make edges
+        const EdgeStages s(c, greenField(c));
+        QCOMPARE(cv::countNonZero(s.edges), 0);
+    }
+};
+
+QTEST_GUILESS_MAIN(EdgesTest)
+#include "core_edges_test.moc"

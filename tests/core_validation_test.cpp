@@ -1,0 +1,135 @@
+// Candidate validation (thesis 4.4): non-green, non-black and circularity tests, each shown
+// rejecting the look-alike it exists for.
+#include "DrawnScene.h"
+#include "Validation.h"
+
+#include <QtTest>
+
+using namespace omnitune;
+using namespace omnitune::test;
+Q_DECLARE_METATYPE(omnitune::RejectReason)
+
+namespace {
+
+// A candidate at distance/angle validated against a frame built by `draw`.
+template <class Draw>
+BallCandidate validateAt(double distance, double angle, Draw draw)
+{
+    const Config c;
+    cv::Mat frame = greenField(c);
+    const cv::Point2d p = pointAt(c, distance, angle);
+    const cv::Point centre(int(std::lround(p.x)), int(std::lround(p.y)));
+    draw(frame, c, centre, expectedRadius(c, distance));
+    const EdgeStages s(c, frame);
+    BallCandidate cand;
+    cand.x = centre.x;
+    cand.y = centre.y;
+    cand.distancePx = s.geometry.distanceAt(centre.x, centre.y);
+    cand.expectedRadiusPx = s.ball.radiusAt(cand.distancePx);
+    validateCandidate(cand, s.classes, s.edges, s.geometry, s.ball, c.validation);
+    return cand;
+}
+
+}  // namespace
+
+class ValidationTest : public QObject {
+    Q_OBJECT
+private slots:
+    void acceptsABall_data()
+    {
+        QTest::addColumn<double>("distance");
+        QTest::newRow("near, 80 px") << 80.0;
+        QTest::newRow("2 m, 175 px") << 175.0;
+        QTest::newRow("far, 230 px") << 230.0;
+    }
+    void acceptsABall()
+    {
+        QFETCH(double, distance);
+        const BallCandidate c = validateAt(distance, 40, [](cv::Mat& f, const Config&, cv::Point p, double r) {
+            cv::circle(f, p, int(std::lround(r)), kOrange, cv::FILLED);
+        });
+        QCOMPARE(c.rejected, RejectReason::None);
+        QVERIFY(c.scores.nonGreenPct >= 85);
+        QVERIFY(c.scores.nonBlackPct >= 50);
+        QVERIFY2(c.scores.circularityPct >= 90, qPrintable(QString::number(c.scores.circularityPct)));
+    }
+
+    void rejectsLookAlikes_data()
+    {
+        QTest::addColumn<int>("shape");
+        QTest::addColumn<RejectReason>("expected");
+        QTest::newRow("white line crossing") << 0 << RejectReason::NonGreen;
+        QTest::newRow("black robot") << 1 << RejectReason::NonBlack;
+        QTest::newRow("patch of green") << 2 << RejectReason::NonGreen;
+        QTest::newRow("half circle") << 3 << RejectReason::Circularity;
+        QTest::newRow("white area edge (not round)") << 4 << RejectReason::Circularity;
+    }
+    void rejectsLookAlikes()
+    {
+        QFETCH(int, shape);
+        QFETCH(RejectReason, expected);
+        const BallCandidate c = validateAt(150, 120, [shape](cv::Mat& f, const Config&, cv::Point p, double r) {
+            const int ri = int(std::lround(r));
+            switch (shape) {
+            case 0:  // two lines crossing at the candidate
+                cv::line(f, p - cv::Point(40, 0), p + cv::Point(40, 0), kWhite, 3);
+                cv::line(f, p - cv::Point(0, 40), p + cv::Point(0, 40), kWhite, 3);
+                break;
+            case 1:  // a black robot, round and as big as the ball square
+                cv::circle(f, p, ri, kBlack, cv::FILLED);
+                break;
+            case 2:  // carpet with a small non-green speck: mostly green
+                cv::circle(f, p, 1, kOrange, cv::FILLED);
+                break;
+            case 3:  // half a ball: its upper border merges into a non-green region, no edge there
+                cv::circle(f, p, ri, kOrange, cv::FILLED);
+                cv::rectangle(f, cv::Rect(p.x - 3 * ri, p.y - 3 * ri, 6 * ri, 3 * ri), kOrange, cv::FILLED);
+                break;
+            case 4:  // a large white area whose straight border passes near
+                cv::rectangle(f, cv::Rect(p.x - 40, p.y - 40, 80, 80), kWhite, cv::FILLED);
+                break;
+            }
+        });
+        QVERIFY2(c.rejected == expected,
+                 qPrintable(QString("rejected by %1 (scores %2 / %3 / %4)")
+                                .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
+                                .arg(c.scores.nonGreenPct)
+                                .arg(c.scores.nonBlackPct)
+                                .arg(c.scores.circularityPct)));
+    }
+
+    void halfCircleScoresAboutHalf()
+    {
+        const BallCandidate c = validateAt(120, 200, [](cv::Mat& f, const Config&, cv::Point p, double r) {
+            const int ri = int(std::lround(r));
+            cv::circle(f, p, ri, kOrange, cv::FILLED);
+            // The upper half's border is blurred away into a non-green, edge-free region.
+            cv::rectangle(f, cv::Rect(p.x - 3 * ri, p.y - 3 * ri, 6 * ri, 3 * ri), kOrange, cv::FILLED);
+        });
+        QVERIFY2(c.scores.circularityPct > 35 && c.scores.circularityPct < 65, qPrintable(QString::number(c.scores.circularityPct)));
+        QCOMPARE(c.rejected, RejectReason::Circularity);
+    }
+
+    void thresholdsAreTheConfigs()
+    {
+        // The same orange ball fails when the circularity threshold is raised above its score.
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 150, 0);
+        const EdgeStages s(c, frame);
+        BallCandidate cand;
+        cand.x = p.x;
+        cand.y = p.y;
+        cand.distancePx = s.geometry.distanceAt(p.x, p.y);
+        cand.expectedRadiusPx = s.ball.radiusAt(cand.distancePx);
+        validateCandidate(cand, s.classes, s.edges, s.geometry, s.ball, c.validation);
+        QCOMPARE(cand.rejected, RejectReason::None);
+        c.validation.minNonBlackPct = 100.1;
+        cand.rejected = RejectReason::None;
+        validateCandidate(cand, s.classes, s.edges, s.geometry, s.ball, c.validation);
+        QCOMPARE(cand.rejected, RejectReason::NonBlack);
+    }
+};
+
+QTEST_GUILESS_MAIN(ValidationTest)
+#include "core_validation_test.moc"
