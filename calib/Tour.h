@@ -15,8 +15,11 @@ namespace omnitune {
 struct TourOptions {
     int frames = 300;                  // evenly spaced along the loop (frame 0 at waypoint 1), >= 1
     BallKind ball = BallKind::Orange;
-    double ballX = -0.05;              // m, field frame; the thesis' real positions are near (-0.05, 2.0)
-    double ballY = 2.0;                // m
+    // m, field frame. The thesis' real positions are near (-0.05, 2.0), which on this field
+    // lies on the centre circle: a ball touching a line merges with it and is a harder case
+    // (docs/evaluation.md reports it separately). The default keeps the ball on open carpet.
+    double ballX = -1.0;
+    double ballY = 3.0;                // m
     bool shadow = false;               // the head shadow in every frame
     bool feet = false;                 // a person standing beside the loop in every frame
     bool obstacles = true;             // three robots outside the loop (cyan, magenta, no marker)

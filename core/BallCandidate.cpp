@@ -8,6 +8,7 @@ std::string_view rejectReasonName(RejectReason r)
     case RejectReason::None: return "accepted";
     case RejectReason::OutsideArea: return "outside processed area";
     case RejectReason::RadiusTooLarge: return "radius too large";
+    case RejectReason::TooSmall: return "too far to validate";
     case RejectReason::NonGreen: return "non-green";
     case RejectReason::NonBlack: return "non-black";
     case RejectReason::Circularity: return "circularity";

@@ -11,6 +11,7 @@ enum class RejectReason {
     None,             // accepted
     OutsideArea,      // centre not on a processed pixel
     RadiusTooLarge,   // OpenCV circle larger than the expected radius at its distance
+    TooSmall,         // expected radius below validation.min_radius_px: too far to judge the shape
     NonGreen,         // too much green in the ball square
     NonBlack,         // too much black in the ball square (a robot)
     Circularity,      // too few edges at the expected radius

@@ -13,8 +13,12 @@ double BallModel::radiusAt(double d) const
 
 int BallModel::squareSizeAt(double distancePx) const
 {
-    const int side = int(std::lround(2.0 * radiusAt(distancePx) * options_.squareRatio));
-    return std::max(3, side | 1);  // odd, so the square is centred on the candidate pixel
+    // Odd so that it is centred on the candidate pixel; an even side rounds down, because one
+    // pixel too many puts carpet corners into a small ball's square (a 3.7 px ball: 7 px is
+    // 0.95 of its diameter and fails the non-green test).
+    int side = int(std::lround(2.0 * radiusAt(distancePx) * options_.squareRatio));
+    if (side % 2 == 0) --side;
+    return std::max(3, side);
 }
 
 }  // namespace omnitune

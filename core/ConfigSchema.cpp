@@ -195,8 +195,17 @@ std::vector<ConfigKey> buildSchema()
                           [](auto& c) -> auto& { return c.validation.minCircularityPct; }));
     s.push_back(doubleKey("validation.radius_tolerance", "fraction", 0, 1, true, "Edges count within expected radius +- this fraction",
                           [](auto& c) -> auto& { return c.validation.radiusTolerance; }));
-    s.push_back(doubleKey("validation.min_radius_band_px", "px", 0, 10, false, "The +- band is never thinner than this (15 % of a 3 px ball is under a pixel)",
+    s.push_back(doubleKey("validation.min_radius_band_px", "px", 0, 10, false, "The +- band is never thinner than this (15 % of a 5 px ball is under a pixel; borders blur ~1 px inwards)",
                           [](auto& c) -> auto& { return c.validation.minRadiusBandPx; }));
+    s.push_back(doubleKey("validation.min_radius_px", "px", 0, 100, false,
+                          "Candidates whose expected radius is below this are rejected: by shape a smaller ball looks like a line corner",
+                          [](auto& c) -> auto& { return c.validation.minRadiusPx; }));
+    s.push_back(boolKey("validation.first_edge_only", false,
+                        "A ray counts only if the first edge from the centre lies in the band; 0: any edge in the band (thesis' text, passes line corners)",
+                        [](auto& c) -> auto& { return c.validation.firstEdgeOnly; }));
+    s.push_back(boolKey("validation.border_into_carpet", false,
+                        "A ray counts only if carpet (or an unprocessed pixel) lies 1.5 px beyond its edge; rejects line corners",
+                        [](auto& c) -> auto& { return c.validation.borderIntoCarpet; }));
 
     // algorithm
     ConfigKey alg{"algorithm.method", ValueType::Choice, "", 0, 0,

@@ -1,5 +1,7 @@
 #include "Geometry.h"
 
+#include <opencv2/imgproc.hpp>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -42,6 +44,7 @@ Geometry::Geometry(const GeometryOptions& options, const cv::Mat& mask) : option
         }
         if (spanStart >= 0) spans_.push_back({y, spanStart, w});
     }
+    cv::erode(used_, edgeMask_, cv::Mat(), cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
 }
 
 }  // namespace omnitune

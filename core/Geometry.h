@@ -37,6 +37,10 @@ public:
     cv::Size imageSize() const { return {options_.imageWidth, options_.imageHeight}; }
     // 255 where a pixel is processed, 0 elsewhere.
     const cv::Mat& usedMask() const { return used_; }
+    // 255 where an edge may lie: used pixels whose 8 neighbours are used too. The border of the
+    // mask is no edge of the scene: a line cut off by the mirror rim would otherwise close into
+    // a small blob that looks like a far ball.
+    const cv::Mat& edgeMask() const { return edgeMask_; }
     // Distance of each pixel to the robot centre in px (CV_32FC1).
     const cv::Mat& distance() const { return distance_; }
     float distanceAt(int x, int y) const { return distance_.at<float>(y, x); }
@@ -48,6 +52,7 @@ public:
 private:
     GeometryOptions options_;
     cv::Mat used_;
+    cv::Mat edgeMask_;
     cv::Mat distance_;
     std::vector<RowSpan> spans_;
     std::vector<int> usedPixels_;

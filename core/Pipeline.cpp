@@ -128,7 +128,7 @@ void Pipeline::process(const cv::Mat& frame, PixelFormat format, PipelineResult&
     makeBinary(r.classes, p.geometry, p.binary);
     r.timings.binaryMs = msSince(t);
     p.canny.detect(p.binary, p.config.edges, p.edges);
-    cv::bitwise_and(p.edges, p.geometry.usedMask(), p.edges);
+    cv::bitwise_and(p.edges, p.geometry.edgeMask(), p.edges);
     r.timings.edgesMs = msSince(t);
 
     const Algorithm alg = p.config.algorithm;

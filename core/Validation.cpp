@@ -65,17 +65,34 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
         bool hit = false;
         int lastX = INT_MIN;
         int lastY = INT_MIN;
-        for (double r = rMin; r <= rMax + 1e-9 && !hit; r += 0.5) {
+        // From the centre when only the first edge counts, else from the band's inner side.
+        const double rStart = options.firstEdgeOnly ? 0.5 : rMin;
+        bool blocked = false;  // an edge inside the band came first
+        for (double r = rStart; r <= rMax + 1e-9 && !hit && !blocked; r += 0.5) {
             const int px = int(std::lround(x + r * ca));
             const int py = int(std::lround(y + r * sa));
             if (px == lastX && py == lastY) continue;
             // A diagonal step could slip between the pixels of an 8-connected edge: look at
             // the two pixels it cuts across too, so that the ray is 4-connected.
+            bool edge = false;
             if (lastX != INT_MIN && px != lastX && py != lastY)
-                hit = edgeAt(px, lastY, anyUsed) || edgeAt(lastX, py, anyUsed);
-            hit = hit || edgeAt(px, py, anyUsed);
+                edge = edgeAt(px, lastY, anyUsed) || edgeAt(lastX, py, anyUsed);
+            edge = edgeAt(px, py, anyUsed) || edge;
             lastX = px;
             lastY = py;
+            if (!edge) continue;
+            if (r < rMin - 1e-9) {
+                blocked = true;
+            } else if (options.borderIntoCarpet) {
+                // Carpet 1.5 px beyond the edge (unprocessed or outside: unknown, accepted).
+                const int bx = int(std::lround(x + (r + 1.5) * ca));
+                const int by = int(std::lround(y + (r + 1.5) * sa));
+                hit = bx < 0 || by < 0 || bx >= w || by >= h || !geometry.isUsed(bx, by) ||
+                      classes.ptr<std::uint8_t>(by)[bx] == std::uint8_t(ColorClass::Green);
+                blocked = !hit;
+            } else {
+                hit = true;
+            }
         }
         usable += anyUsed;
         hits += hit;
@@ -91,7 +108,9 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
     c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, ball.squareSizeAt(c.distancePx), classes, edges,
                            geometry, options);
     if (c.rejected != RejectReason::None) return;  // already out (outside the area, too large)
-    if (c.scores.nonGreenPct < options.minNonGreenPct)
+    if (c.expectedRadiusPx < options.minRadiusPx)
+        c.rejected = RejectReason::TooSmall;
+    else if (c.scores.nonGreenPct < options.minNonGreenPct)
         c.rejected = RejectReason::NonGreen;
     else if (c.scores.nonBlackPct < options.minNonBlackPct)
         c.rejected = RejectReason::NonBlack;

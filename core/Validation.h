@@ -17,7 +17,20 @@ struct ValidationOptions {
     double minNonBlackPct = 50.0;    // %; rejects black robots; higher would lose part-black balls
     double minCircularityPct = 70.0; // %; a still ball gives ~90, motion blur lowers it
     double radiusTolerance = 0.15;   // fraction of the expected radius searched for an edge
-    double minRadiusBandPx = 1.0;    // px; the search band is never thinner (far, small balls)
+    // px; the search band is never thinner. Segmentation and Canny put a small ball's border up
+    // to ~1 px inside the expected radius; at 1.0 a third of 5 px balls failed circularity.
+    double minRadiusBandPx = 1.5;
+    // px; candidates whose expected radius is smaller are not validated (rejected): below
+    // ~4 px a line corner passes all three tests as often as a ball does (measured on
+    // simulated tours). Lower it to search farther, at the price of false positives.
+    double minRadiusPx = 4.0;
+    // A ray counts only when the first edge it meets walking out from the centre lies in the
+    // band (a ball's border is its first edge). The thesis counts any edge in the band, which
+    // lets line corners and junctions with edges all around a small radius pass.
+    bool firstEdgeOnly = true;
+    // A ray counts only when carpet (or an unprocessed pixel) lies just beyond its edge: a
+    // ball's border opens onto the field, the edges of a line corner lead into more line.
+    bool borderIntoCarpet = true;
 };
 
 // Scores one candidate and sets its `rejected` field (first failing test in thesis order:

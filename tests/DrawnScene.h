@@ -67,7 +67,7 @@ struct EdgeStages {
         makeBinary(classes, geometry, binary);
         CannyDetector canny;
         canny.detect(binary, c.edges, edges);
-        cv::bitwise_and(edges, geometry.usedMask(), edges);
+        cv::bitwise_and(edges, geometry.edgeMask(), edges);
     }
 };
 

@@ -40,7 +40,7 @@ private slots:
         QTest::addColumn<double>("distance");
         QTest::newRow("near, 80 px") << 80.0;
         QTest::newRow("2 m, 175 px") << 175.0;
-        QTest::newRow("far, 230 px") << 230.0;
+        QTest::newRow("far, 200 px") << 200.0;
     }
     void acceptsABall()
     {
@@ -63,6 +63,7 @@ private slots:
         QTest::newRow("patch of green") << 2 << RejectReason::NonGreen;
         QTest::newRow("half circle") << 3 << RejectReason::Circularity;
         QTest::newRow("white area edge (not round)") << 4 << RejectReason::Circularity;
+        QTest::newRow("line corner") << 5 << RejectReason::Circularity;
     }
     void rejectsLookAlikes()
     {
@@ -88,6 +89,10 @@ private slots:
             case 4:  // a large white area whose straight border passes near
                 cv::rectangle(f, cv::Rect(p.x - 40, p.y - 40, 80, 80), kWhite, cv::FILLED);
                 break;
+            case 5:  // two lines as wide as the ball meeting at the candidate
+                cv::line(f, p, p + cv::Point(40, 25), kWhite, 2 * ri);
+                cv::line(f, p, p + cv::Point(-10, 45), kWhite, 2 * ri);
+                break;
             }
         });
         QVERIFY2(c.rejected == expected,
@@ -108,6 +113,15 @@ private slots:
         });
         QVERIFY2(c.scores.circularityPct > 35 && c.scores.circularityPct < 65, qPrintable(QString::number(c.scores.circularityPct)));
         QCOMPARE(c.rejected, RejectReason::Circularity);
+    }
+
+    void tooSmallToValidate()
+    {
+        const BallCandidate c = validateAt(230, 40, [](cv::Mat& f, const Config&, cv::Point p, double r) {
+            cv::circle(f, p, int(std::lround(r)), kOrange, cv::FILLED);
+        });
+        QVERIFY(c.expectedRadiusPx < Config{}.validation.minRadiusPx);
+        QCOMPARE(c.rejected, RejectReason::TooSmall);
     }
 
     void thresholdsAreTheConfigs()

@@ -1,0 +1,42 @@
+#include "ToolConfig.h"
+
+#include "ConfigParser.h"
+#include "Session.h"
+
+#include <filesystem>
+#include <iostream>
+
+namespace omnitune {
+
+std::optional<Config> loadToolConfig(const std::optional<std::string>& configPath, const std::string& inputPath,
+                                     const std::optional<std::string>& algorithm, std::string& error)
+{
+    std::string path;
+    if (configPath) {
+        path = *configPath;
+    } else {
+        const auto candidate = std::filesystem::path(inputPath) / kSessionConfigFile;
+        if (!std::filesystem::is_regular_file(candidate)) {
+            error = "no --config given and " + inputPath + " holds no " + std::string(kSessionConfigFile);
+            return std::nullopt;
+        }
+        path = candidate.string();
+    }
+    ConfigLoad load = loadConfig(path);
+    for (const auto& w : load.warnings) std::cerr << "warning: " << w.toString() << "\n";
+    if (!load.ok()) {
+        error = load.error->toString();
+        return std::nullopt;
+    }
+    if (algorithm) {
+        const auto a = parseAlgorithm(*algorithm);
+        if (!a) {
+            error = "--algorithm must be specific, opencv or combined, not '" + *algorithm + "'";
+            return std::nullopt;
+        }
+        load.config.algorithm = *a;
+    }
+    return load.config;
+}
+
+}  // namespace omnitune

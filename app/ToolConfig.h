@@ -1,0 +1,14 @@
+#pragma once
+// The config a command-line tool runs with: --config FILE, else the session's own config.yml;
+// --algorithm overrides the file's choice. Warnings go to stderr; an error is one line.
+#include "Config.h"
+
+#include <optional>
+#include <string>
+
+namespace omnitune {
+
+std::optional<Config> loadToolConfig(const std::optional<std::string>& configPath, const std::string& inputPath,
+                                     const std::optional<std::string>& algorithm, std::string& error);
+
+}  // namespace omnitune

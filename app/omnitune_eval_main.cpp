@@ -1,0 +1,94 @@
+// omnitune-eval: the thesis' Table 5.x for recorded sessions with truth.csv, one row per
+// session and algorithm.
+#include "BatchRun.h"
+#include "CommandLine.h"
+#include "Evaluation.h"
+#include "SessionReader.h"
+#include "SessionSource.h"
+#include "StderrProgress.h"
+#include "ToolConfig.h"
+
+#include <filesystem>
+#include <iostream>
+
+using namespace omnitune;
+
+namespace {
+
+const std::vector<OptionSpec> kOptions = {
+    {"session", true, true, "DIR   a session with truth.csv; repeat for several (one row each)"},
+    {"config", true, false, "FILE  detector config (default: each session's config.yml)"},
+    {"algorithm", true, false, "A     specific | opencv | combined | all (default: the config's)"},
+    {"format", true, false, "F     md (default) or csv"},
+    {"max-error", true, false, "M     metres beyond which a detection is a false positive (default 0.5)"},
+    {"help", false, false, "      this text"},
+};
+
+int fail(const std::string& why)
+{
+    std::cerr << "omnitune-eval: " << why << "\n";
+    return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    const CommandLine cl = parseCommandLine(argc, argv, kOptions);
+    if (cl.has("help")) {
+        std::cout << usageText("omnitune-eval", "Evaluates the detector against sessions' ground truth (thesis ch. 5).",
+                               kOptions);
+        return 0;
+    }
+    if (!cl.error.empty()) return fail(cl.error + " (see --help)");
+    if (!cl.has("session")) return fail("--session is required (see --help)");
+    const std::string format = cl.value("format").value_or("md");
+    if (format != "md" && format != "csv") return fail("--format must be md or csv, not '" + format + "'");
+    EvaluationOptions options;
+    if (auto m = cl.value("max-error")) {
+        const auto v = parseDouble(*m);
+        if (!v || *v <= 0) return fail("--max-error must be a positive number of metres, not '" + *m + "'");
+        options.maxErrorM = *v;
+    }
+    std::vector<std::string> algorithms;
+    const std::string algorithm = cl.value("algorithm").value_or("");
+    if (algorithm == "all")
+        algorithms = {"specific", "opencv", "combined"};
+    else
+        algorithms = {algorithm};
+
+    std::vector<EvaluationRow> rows;
+    for (const std::string& dir : cl.all("session")) {
+        SessionOpen opened = SessionReader::open(dir);
+        if (!opened.ok()) return fail(opened.error->toString());
+        for (const auto& w : opened.reader->warnings()) std::cerr << "warning: " << w.toString() << "\n";
+        if (opened.reader->truth().empty()) return fail(dir + " has no truth.csv (mark the ball first, or use omnitune-detect)");
+        const auto truth = opened.reader->truth();
+        const std::string name = std::filesystem::path(dir).filename().string();
+        for (const std::string& a : algorithms) {
+            std::string error;
+            const auto config = loadToolConfig(cl.value("config"), dir, a.empty() ? std::nullopt : std::optional(a), error);
+            if (!config) return fail(error);
+            SessionSource source(*opened.reader);
+            std::vector<FrameOutcome> outcomes;
+            try {
+                Pipeline pipeline(*config);
+                StderrProgress progress("omnitune-eval " + name + " " + std::string(algorithmName(config->algorithm)));
+                runBatch(source, pipeline,
+                         [&](int index, const Frame*, const PipelineResult& r) {
+                             if (!r.ok()) std::cerr << "frame " << index << " skipped: " << r.error << "\n";
+                             outcomes.push_back({index, r.ok(), r.detection, r.timings.totalMs});
+                         },
+                         &progress);
+            } catch (const std::exception& e) {
+                return fail(e.what());
+            }
+            EvaluationRow row = evaluate(outcomes, truth, options);
+            row.session = name;
+            row.algorithm = std::string(algorithmName(config->algorithm));
+            rows.push_back(row);
+        }
+    }
+    std::cout << (format == "md" ? evaluationMarkdown(rows) : evaluationCsv(rows));
+    return 0;
+}

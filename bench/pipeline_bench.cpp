@@ -1,0 +1,218 @@
+// Per-stage and whole-pipeline timings on simulated 640x480 omnidirectional frames, each
+// beside cv::HoughCircles with the thesis' parameters on the same frames (see RatioReporter).
+// Run: scripts/bench  (numbers and machine in docs/performance.md)
+#include "RatioReporter.h"
+
+#include "BallKind.h"
+#include "Pipeline.h"
+#include "SceneSimulator.h"
+#include "Tour.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <benchmark/benchmark.h>
+
+namespace {
+
+using namespace omnitune;
+
+// The frames every benchmark shares: a tour around each of the five balls, and the stages
+// before the Hough transform computed once so that each stage is timed on its own input.
+struct Frames {
+    Config config;
+    std::vector<cv::Mat> bgr;
+    std::vector<cv::Mat> classes;
+    std::vector<cv::Mat> binary;
+    std::vector<cv::Mat> edges;
+    Geometry geometry;
+    BallModel ball;
+
+    Frames() : geometry(config.geometry, config.mask), ball(config.ball)
+    {
+        const SceneSimulator sim(config);
+        for (BallKind kind : kAllBallKinds) {
+            TourOptions tour;
+            tour.frames = 8;
+            tour.ball = kind;
+            for (const SceneOptions& scene : makeTour(tour)) bgr.push_back(sim.render(scene));
+        }
+        const ColorLut lut(config.colors);
+        CannyDetector canny;
+        for (const cv::Mat& f : bgr) {
+            cv::Mat c(f.size(), CV_8UC1, cv::Scalar(0));
+            lut.segment(f, PixelFormat::Bgr8, geometry.spans(), c);
+            cv::Mat b;
+            makeBinary(c, geometry, b);
+            cv::Mat e;
+            canny.detect(b, config.edges, e);
+            cv::bitwise_and(e, geometry.edgeMask(), e);
+            classes.push_back(c);
+            binary.push_back(b);
+            edges.push_back(e);
+        }
+    }
+};
+
+const Frames& frames()
+{
+    static const Frames f;
+    return f;
+}
+
+void setFrames(benchmark::State& state)
+{
+    state.SetItemsProcessed(state.iterations());
+    state.counters["frames"] = double(frames().bgr.size());
+}
+
+// The reference: cv::HoughCircles exactly as the thesis' OpenCV path calls it.
+void BM_CvHoughCircles(benchmark::State& state)
+{
+    const auto& f = frames();
+    const OpenCvHoughOptions o;
+    std::vector<cv::Vec3f> circles;
+    std::size_t i = 0;
+    for (auto _ : state) {
+        cv::HoughCircles(f.binary[i++ % f.binary.size()], circles, cv::HOUGH_GRADIENT, o.dp, o.minDist, o.cannyHigh,
+                         o.accThreshold, o.minRadius, o.maxRadius);
+        benchmark::DoNotOptimize(circles.data());
+    }
+    setFrames(state);
+}
+
+// Segmentation at each LUT resolution; "agreement" is the share of pixels classified as the
+// exact (8-bit) table does, so speed and accuracy of the choice show side by side.
+void BM_Segment(benchmark::State& state)
+{
+    const auto& f = frames();
+    ColorLutOptions o = f.config.colors;
+    o.bits = int(state.range(0));
+    const ColorLut lut(o);
+    ColorLutOptions exactOptions = o;
+    exactOptions.bits = 8;
+    const ColorLut exact(exactOptions);
+    cv::Mat out(f.bgr[0].size(), CV_8UC1, cv::Scalar(0));
+    std::size_t i = 0;
+    for (auto _ : state) {
+        lut.segment(f.bgr[i++ % f.bgr.size()], PixelFormat::Bgr8, f.geometry.spans(), out);
+        benchmark::ClobberMemory();
+    }
+    double same = 0;
+    double total = 0;
+    cv::Mat ref(out.size(), CV_8UC1, cv::Scalar(0));
+    for (const cv::Mat& img : f.bgr) {
+        lut.segment(img, PixelFormat::Bgr8, f.geometry.spans(), out);
+        exact.segment(img, PixelFormat::Bgr8, f.geometry.spans(), ref);
+        same += double(f.geometry.usedPixels().size()) - cv::countNonZero(out != ref);
+        total += double(f.geometry.usedPixels().size());
+    }
+    state.counters["agreement_pct"] = 100.0 * same / total;
+    state.counters["table_KiB"] = double(std::size_t(1) << (3 * o.bits)) / 1024.0;
+    setFrames(state);
+}
+
+void BM_Binary(benchmark::State& state)
+{
+    const auto& f = frames();
+    cv::Mat out;
+    std::size_t i = 0;
+    for (auto _ : state) makeBinary(f.classes[i++ % f.classes.size()], f.geometry, out);
+    setFrames(state);
+}
+
+void BM_Canny(benchmark::State& state)
+{
+    const auto& f = frames();
+    CannyDetector canny;
+    cv::Mat out;
+    std::size_t i = 0;
+    for (auto _ : state) canny.detect(f.binary[i++ % f.binary.size()], f.config.edges, out);
+    setFrames(state);
+}
+
+void BM_CvCanny(benchmark::State& state)
+{
+    const auto& f = frames();
+    cv::Mat out;
+    std::size_t i = 0;
+    for (auto _ : state) cv::Canny(f.binary[i++ % f.binary.size()], out, f.config.edges.cannyLow, f.config.edges.cannyHigh);
+    setFrames(state);
+}
+
+void BM_SpecificHough(benchmark::State& state)
+{
+    const auto& f = frames();
+    SpecificHough hough(f.config.hough, f.geometry, f.ball);
+    std::vector<BallCandidate> cands;
+    cands.reserve(16);
+    std::size_t i = 0;
+    for (auto _ : state) {
+        cands.clear();
+        const std::size_t k = i++ % f.edges.size();
+        hough.process(f.edges[k], f.binary[k], cands);
+    }
+    setFrames(state);
+}
+
+void BM_Validation(benchmark::State& state)
+{
+    const auto& f = frames();
+    SpecificHough hough(f.config.hough, f.geometry, f.ball);
+    std::vector<std::vector<BallCandidate>> perFrame;
+    for (std::size_t k = 0; k < f.edges.size(); ++k) {
+        perFrame.emplace_back();
+        hough.process(f.edges[k], f.binary[k], perFrame.back());
+    }
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const std::size_t k = i++ % perFrame.size();
+        for (BallCandidate c : perFrame[k]) {
+            validateCandidate(c, f.classes[k], f.edges[k], f.geometry, f.ball, f.config.validation);
+            benchmark::DoNotOptimize(c.scores);
+        }
+    }
+    setFrames(state);
+}
+
+void BM_Pipeline(benchmark::State& state)
+{
+    const auto& f = frames();
+    Config c = f.config;
+    c.algorithm = static_cast<Algorithm>(state.range(0));
+    Pipeline pipeline(c);
+    PipelineResult r;
+    std::size_t i = 0;
+    int found = 0;
+    for (auto _ : state) {
+        pipeline.process(f.bgr[i++ % f.bgr.size()], PixelFormat::Bgr8, r);
+        found += r.detection.found;
+    }
+    state.SetLabel(std::string(algorithmName(c.algorithm)));
+    state.counters["found_pct"] = 100.0 * found / double(state.iterations());
+    setFrames(state);
+}
+
+}  // namespace
+
+BENCHMARK(BM_CvHoughCircles)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Segment)->DenseRange(4, 8)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Binary)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Canny)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CvCanny)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SpecificHough)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Validation)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Pipeline)
+    ->Arg(int(omnitune::Algorithm::Specific))
+    ->Arg(int(omnitune::Algorithm::OpenCv))
+    ->Arg(int(omnitune::Algorithm::Combined))
+    ->Unit(benchmark::kMillisecond);
+
+int main(int argc, char** argv)
+{
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    RatioReporter reporter("BM_CvHoughCircles");
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    benchmark::Shutdown();
+    return 0;
+}
