@@ -29,6 +29,7 @@ const std::vector<OptionSpec> kOptions = {
     {"light", true, false, "F     light level factor (default 1)"},
     {"gradient", true, false, "F     light gradient / vignetting, 0..1 (default 0)"},
     {"noise", true, false, "F     sensor noise sigma, grey levels (default 2)"},
+    {"compression", true, false, "N     PNG zlib level 0..9 (default 1: fast; 9: smallest, for bundled sessions)"},
     {"overwrite", false, false, "      replace an existing session in --out"},
     {"help", false, false, "      this text"},
 };
@@ -109,6 +110,11 @@ int main(int argc, char** argv)
                      (tour.obstacles ? "" : ", no obstacles");
         SessionWriterOptions writerOptions;
         writerOptions.overwrite = cl.has("overwrite");
+        if (auto level = cl.value("compression")) {
+            const auto v = parseInt(*level);
+            if (!v || *v < 0 || *v > 9) return fail("--compression must be 0..9, not '" + *level + "'");
+            writerOptions.pngCompression = *v;
+        }
         SessionCreate created = SessionWriter::create(*cl.value("out"), info, writerOptions);
         if (!created.writer) return fail(created.error->toString());
         SessionWriter& writer = *created.writer;

@@ -15,7 +15,7 @@ namespace {
 
 std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
 
-// The files a session consists of, with the .bak/.tmp that writeFileAtomically leaves.
+// The files a session consists of, with the .bak/.tmp that atomic writes may leave.
 void removeSession(const fs::path& dir, std::error_code& ec)
 {
     for (std::string_view name : {kSessionInfoFile, kSessionTruthFile, kSessionConfigFile}) {
@@ -120,7 +120,7 @@ SessionWriter::~SessionWriter()
 std::optional<SessionIssue> SessionWriter::writeInfo()
 {
     const std::string path = (fs::path(folder_) / kSessionInfoFile).string();
-    if (auto err = writeFileAtomically(path, serializeSessionInfo(info_)))
+    if (auto err = writeFileAtomically(path, serializeSessionInfo(info_), false))
         return SessionIssue{SessionIssueKind::WriteError, path, 0, "", *err};
     return std::nullopt;
 }
@@ -154,7 +154,7 @@ std::optional<SessionIssue> SessionWriter::appendFrame(const cv::Mat& bgr, const
         return refuse(SessionIssueKind::WriteError, "cannot encode frame " + std::to_string(index) + " as PNG: " + e.err);
     }
     const std::string path = (fs::path(folder_) / name).string();
-    if (auto err = writeFileAtomically(path, std::string(png.begin(), png.end())))
+    if (auto err = writeFileAtomically(path, std::string(png.begin(), png.end()), false))
         return refuse(SessionIssueKind::WriteError, *err);
 
     ++info_.frameCount;

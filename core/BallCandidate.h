@@ -24,6 +24,7 @@ struct ValidationScores {
     double nonGreenPct = 0.0;    // % of processed pixels in the ball square that are not green
     double nonBlackPct = 0.0;    // % that are not black
     double circularityPct = 0.0; // % of rays that meet an edge at the expected radius +- tolerance
+    double borderSpreadPx = 0.0; // std of the radius at which those rays met the edge
 };
 
 struct BallCandidate {

@@ -81,7 +81,7 @@ std::string serializeConfig(const Config& config)
     return fs.releaseAndGetString();
 }
 
-std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& bytes)
+std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& bytes, bool keepBackup)
 {
     namespace fs = std::filesystem;
     const std::string tmp = path + ".tmp";
@@ -105,7 +105,7 @@ std::optional<std::string> writeFileAtomically(const std::string& path, const st
         return "cannot flush " + tmp + ": " + why;
     }
     std::error_code ec;
-    if (fs::exists(path, ec)) {
+    if (keepBackup && fs::exists(path, ec)) {
         fs::copy_file(path, path + ".bak", fs::copy_options::overwrite_existing, ec);
         if (ec) {
             ::unlink(tmp.c_str());

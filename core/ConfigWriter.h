@@ -16,8 +16,9 @@ std::string serializeConfig(const Config& config);
 // it is not valid. Returns the fault, or nothing on success.
 std::optional<ConfigIssue> saveConfig(const Config& config, const std::string& path);
 
-// Writes `bytes` to `path` atomically with a `path`.bak of the previous file; on failure
-// returns a message and leaves `path` as it was.
-std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& bytes);
+// Writes `bytes` to `path` atomically (temp file, flush, rename), with a `path`.bak of the
+// previous file when `keepBackup`; on failure returns a message and leaves `path` as it was.
+std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& bytes,
+                                               bool keepBackup = true);
 
 }  // namespace omnitune

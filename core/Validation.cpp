@@ -52,6 +52,8 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
     const int rays = rayCount(radius);
     int usable = 0;
     int hits = 0;
+    double hitSum = 0;
+    double hitSq = 0;
     auto edgeAt = [&](int px, int py, bool& anyUsed) {
         if (px < 0 || py < 0 || px >= w || py >= h || !geometry.isUsed(px, py)) return false;
         anyUsed = true;
@@ -83,6 +85,7 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
             if (!edge) continue;
             if (r < rMin - 1e-9) {
                 blocked = true;
+                continue;
             } else if (options.borderIntoCarpet) {
                 // Carpet 1.5 px beyond the edge (unprocessed or outside: unknown, accepted).
                 const int bx = int(std::lround(x + (r + 1.5) * ca));
@@ -93,11 +96,16 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
             } else {
                 hit = true;
             }
+            if (hit) {
+                hitSum += r;
+                hitSq += r * r;
+            }
         }
         usable += anyUsed;
         hits += hit;
     }
     if (usable >= kMinUsableRayShare * rays) s.circularityPct = 100.0 * hits / usable;
+    if (hits > 0) s.borderSpreadPx = std::sqrt(std::max(0.0, hitSq / hits - (hitSum / hits) * (hitSum / hits)));
     return s;
 }
 
