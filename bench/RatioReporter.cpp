@@ -7,7 +7,8 @@ void RatioReporter::ReportRuns(const std::vector<Run>& runs)
     ConsoleReporter::ReportRuns(runs);
     for (const Run& r : runs) {
         if (r.run_type != Run::RT_Iteration || r.iterations == 0) continue;
-        const double ms = r.GetAdjustedRealTime() * benchmark::GetTimeUnitMultiplier(r.time_unit) * 1e3;
+        // GetAdjustedRealTime() is in the run's unit; the multiplier is units per second.
+        const double ms = r.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(r.time_unit) * 1e3;
         times_.emplace_back(r.benchmark_name(), ms);
     }
 }

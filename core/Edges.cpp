@@ -4,6 +4,7 @@
 #include "FillBytes.h"
 #include "Geometry.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace omnitune {
@@ -29,48 +30,53 @@ constexpr int kTan22 = 13573;
 
 void CannyDetector::detect(const cv::Mat& gray, const EdgeOptions& options, cv::Mat& edges)
 {
-    CV_Assert(gray.type() == CV_8UC1 && gray.isContinuous());
+    CV_Assert(gray.type() == CV_8UC1);
     const int w = gray.cols;
     const int h = gray.rows;
     const std::size_t n = std::size_t(w) * std::size_t(h);
+    const int stride = w + 2;  // magnitude_ has a zero border: neighbours need no bounds checks
     dx_.resize(n);
     dy_.resize(n);
-    magnitude_.resize(n);
+    magnitude_.assign(std::size_t(stride) * std::size_t(h + 2), 0);
     state_.resize(n);
     if (stack_.capacity() < n) stack_.reserve(n);
     stack_.clear();
 
-    // 3x3 Sobel with a replicated border, L1 magnitude.
+    // 3x3 Sobel with a replicated border, L1 magnitude. The inner columns need no clamping,
+    // which lets the compiler vectorise them.
     for (int y = 0; y < h; ++y) {
         const std::uint8_t* up = gray.ptr<std::uint8_t>(y > 0 ? y - 1 : 0);
         const std::uint8_t* mid = gray.ptr<std::uint8_t>(y);
         const std::uint8_t* down = gray.ptr<std::uint8_t>(y < h - 1 ? y + 1 : h - 1);
-        const std::size_t row = std::size_t(y) * std::size_t(w);
-        for (int x = 0; x < w; ++x) {
-            const int l = x > 0 ? x - 1 : 0;
-            const int r = x < w - 1 ? x + 1 : w - 1;
+        std::int16_t* gxRow = dx_.data() + std::size_t(y) * std::size_t(w);
+        std::int16_t* gyRow = dy_.data() + std::size_t(y) * std::size_t(w);
+        std::int32_t* magRow = magnitude_.data() + std::size_t(y + 1) * std::size_t(stride) + 1;
+        auto sobel = [&](int x, int l, int r) {
             const int gx = (up[r] + 2 * mid[r] + down[r]) - (up[l] + 2 * mid[l] + down[l]);
             const int gy = (down[l] + 2 * down[x] + down[r]) - (up[l] + 2 * up[x] + up[r]);
-            dx_[row + std::size_t(x)] = std::int16_t(gx);
-            dy_[row + std::size_t(x)] = std::int16_t(gy);
-            magnitude_[row + std::size_t(x)] = std::abs(gx) + std::abs(gy);
-        }
+            gxRow[x] = std::int16_t(gx);
+            gyRow[x] = std::int16_t(gy);
+            magRow[x] = std::abs(gx) + std::abs(gy);
+        };
+        sobel(0, 0, std::min(1, w - 1));
+        for (int x = 1; x < w - 1; ++x) sobel(x, x - 1, x + 1);
+        if (w > 1) sobel(w - 1, w - 2, w - 1);
     }
 
     // Non-maximum suppression along the quantised gradient direction; outside the image the
     // magnitude counts as 0. state: 0 = no edge, 1 = weak (above low), 2 = strong (above high).
     const int low = options.cannyLow;
     const int high = options.cannyHigh;
-    auto mag = [&](int x, int y) -> int {
-        if (x < 0 || y < 0 || x >= w || y >= h) return 0;
-        return magnitude_[std::size_t(y) * std::size_t(w) + std::size_t(x)];
-    };
+    std::fill(state_.begin(), state_.end(), std::uint8_t(0));
     for (int y = 0; y < h; ++y) {
+        const std::int32_t* m0 = magnitude_.data() + std::size_t(y + 1) * std::size_t(stride) + 1;
+        const std::int32_t* mUp = m0 - stride;
+        const std::int32_t* mDown = m0 + stride;
+        const std::size_t row = std::size_t(y) * std::size_t(w);
         for (int x = 0; x < w; ++x) {
-            const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
-            const int m = magnitude_[i];
-            state_[i] = 0;
+            const int m = m0[x];
             if (m <= low) continue;
+            const std::size_t i = row + std::size_t(x);
             const int xs = dx_[i];
             const int ys = dy_[i];
             const int ax = std::abs(xs);
@@ -78,14 +84,14 @@ void CannyDetector::detect(const cv::Mat& gray, const EdgeOptions& options, cv::
             const int tg22x = ax * kTan22;
             bool isMax;
             if (ay < tg22x) {
-                isMax = m > mag(x - 1, y) && m >= mag(x + 1, y);
+                isMax = m > m0[x - 1] && m >= m0[x + 1];
             } else {
                 const int tg67x = tg22x + (ax << (kShift + 1));
                 if (ay > tg67x) {
-                    isMax = m > mag(x, y - 1) && m >= mag(x, y + 1);
+                    isMax = m > mUp[x] && m >= mDown[x];
                 } else {
                     const int s = (xs ^ ys) < 0 ? -1 : 1;
-                    isMax = m > mag(x - s, y - 1) && m > mag(x + s, y + 1);
+                    isMax = m > mUp[x - s] && m > mDown[x + s];
                 }
             }
             if (!isMax) continue;
@@ -100,10 +106,8 @@ void CannyDetector::detect(const cv::Mat& gray, const EdgeOptions& options, cv::
         stack_.pop_back();
         const int x = i % w;
         const int y = i / w;
-        for (int ny = y - 1; ny <= y + 1; ++ny) {
-            if (ny < 0 || ny >= h) continue;
-            for (int nx = x - 1; nx <= x + 1; ++nx) {
-                if (nx < 0 || nx >= w) continue;
+        for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, h - 1); ++ny) {
+            for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, w - 1); ++nx) {
                 const std::size_t j = std::size_t(ny) * std::size_t(w) + std::size_t(nx);
                 if (state_[j] == 1) {
                     state_[j] = 2;
