@@ -1,5 +1,7 @@
 #include "ImageGlobSource.h"
 
+#include "ImageFile.h"
+
 #include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
@@ -14,15 +16,6 @@ namespace fs = std::filesystem;
 namespace {
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
-
-cv::Mat decode(const std::string& path)
-{
-    try {
-        return cv::imread(path, cv::IMREAD_COLOR);
-    } catch (const cv::Exception&) {
-        return {};
-    }
-}
 
 }  // namespace
 
@@ -124,7 +117,7 @@ SourceOpen<ImageGlobSource> ImageGlobSource::open(const std::string& pattern, co
     s->frameRate_ = options.frameRate;
     for (const fs::path& m : matches) s->files_.push_back(m.string());
     for (const std::string& f : s->files_) {
-        const cv::Mat first = decode(f);
+        const cv::Mat first = readImageFile(f);
         if (first.empty()) {
             out.warnings.push_back(f + " does not decode as an image; reading it gives an error");
             continue;
@@ -146,7 +139,7 @@ std::optional<FrameError> ImageGlobSource::readAt(int index, Frame& out)
     const std::string& path = files_[std::size_t(index)];
     std::error_code ec;
     if (!fs::exists(path, ec)) return FrameError{FrameErrorKind::Missing, index, path, path + " is missing"};
-    cv::Mat image = decode(path);
+    cv::Mat image = readImageFile(path);
     if (image.empty())
         return FrameError{FrameErrorKind::Unreadable, index, path, path + " does not decode as an image"};
     if (image.size() != size_)

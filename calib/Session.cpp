@@ -1,13 +1,13 @@
 #include "Session.h"
 
 #include "ConfigSchema.h"
+#include "YamlText.h"
 
 #include <opencv2/core.hpp>
 
 #include <cstdio>
 #include <ctime>
 #include <functional>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -62,18 +62,6 @@ int lineOfKey(const std::string& text, const std::string& section, const std::st
     return 0;
 }
 
-// OpenCV's parse errors read "...: (line) : message" in several shapes; keep line and message.
-SessionIssue parseIssue(const std::string& file, const cv::Exception& e)
-{
-    SessionIssue is{SessionIssueKind::ParseError, file, 0, "", "not valid YAML: " + e.err};
-    std::smatch m;
-    const std::string msg = e.msg;
-    if (std::regex_search(msg, m, std::regex(R"(\((\d+)\): ([^\n]*))"))) {
-        is.line = std::stoi(m[1]);
-        is.message = "not valid YAML: " + std::string(m[2]);
-    }
-    return is;
-}
 
 // Reads a node into the info, or returns why not (the info is left unchanged).
 using Reader = std::function<std::optional<SessionIssue>(const cv::FileNode&, SessionInfo&)>;
@@ -211,17 +199,10 @@ SessionInfoParse parseSessionInfo(const std::string& text, const std::string& fi
         return fail(SessionIssueKind::ParseError, "", "the file is empty");
 
     cv::FileStorage fs;
-    const bool hasDirective = text.rfind("%YAML", 0) == 0;
-    try {
-        // OpenCV wants the YAML directive to detect the format from memory.
-        fs.open(hasDirective ? text : "%YAML:1.0\n" + text,
-                cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
-    } catch (const cv::Exception& e) {
-        out.error = parseIssue(fileName, e);
-        if (out.error->line > 0 && !hasDirective) --out.error->line;  // our added line
+    if (const auto err = openYamlText(text, fs)) {
+        out.error = SessionIssue{SessionIssueKind::ParseError, fileName, err->line, "", "not valid YAML: " + err->message};
         return out;
     }
-    if (!fs.isOpened()) return fail(SessionIssueKind::ParseError, "", "not valid YAML");
     const cv::FileNode root = fs.root();
     if (!root.isMap()) return fail(SessionIssueKind::NotASession, "", "the top level is not a map of keys");
 

@@ -1,5 +1,7 @@
 #include "SessionReader.h"
 
+#include "ImageFile.h"
+
 #include <opencv2/imgcodecs.hpp>
 
 #include <array>
@@ -61,15 +63,6 @@ std::string frameList(const std::vector<int>& indices, std::size_t total)
     for (int i : indices) s += (s.empty() ? "" : ", ") + sessionFrameName(i);
     if (total > indices.size()) s += " and " + std::to_string(total - indices.size()) + " more";
     return s;
-}
-
-cv::Mat decode(const std::string& path)
-{
-    try {
-        return cv::imread(path, cv::IMREAD_COLOR);
-    } catch (const cv::Exception&) {
-        return {};
-    }
 }
 
 }  // namespace
@@ -151,7 +144,7 @@ SessionOpen SessionReader::open(const std::string& folder)
     if (r.info_.width <= 0 || r.info_.height <= 0) {
         r.info_.width = r.info_.height = 0;
         for (int i : present) {
-            const cv::Mat first = decode(r.framePath(i));
+            const cv::Mat first = readImageFile(r.framePath(i));
             if (first.empty()) continue;
             r.info_.width = first.cols;
             r.info_.height = first.rows;
@@ -220,7 +213,7 @@ std::optional<FrameError> SessionReader::readFrame(int index, cv::Mat& bgr) cons
     std::error_code ec;
     if (!fs::exists(path, ec))
         return FrameError{FrameErrorKind::Missing, index, path, path + " is missing"};
-    cv::Mat image = decode(path);
+    cv::Mat image = readImageFile(path);
     if (image.empty())
         return FrameError{FrameErrorKind::Unreadable, index, path, path + " does not decode as an image"};
     if (image.cols != info_.width || image.rows != info_.height)

@@ -1,13 +1,13 @@
 #include "ConfigParser.h"
 
 #include "ConfigSchema.h"
+#include "YamlText.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -97,18 +97,6 @@ void collectUnknown(const cv::FileNode& node, const std::string& prefix, std::ve
     }
 }
 
-// OpenCV's parse errors read "...: (line) : message" in several shapes; keep line and message.
-ConfigIssue parseIssue(const std::string& file, const cv::Exception& e)
-{
-    ConfigIssue is{ConfigIssueKind::ParseError, file, 0, "", "not a valid YAML config: " + e.err};
-    std::smatch m;
-    const std::string msg = e.msg;
-    if (std::regex_search(msg, m, std::regex(R"(\((\d+)\): ([^\n]*))"))) {
-        is.line = std::stoi(m[1]);
-        is.message = "not a valid YAML config: " + std::string(m[2]);
-    }
-    return is;
-}
 
 }  // namespace
 
@@ -123,17 +111,10 @@ ConfigLoad parseConfig(const std::string& text, const std::string& fileName)
         return fail(ConfigIssueKind::ParseError, "", "the file is empty");
 
     cv::FileStorage fs;
-    try {
-        // OpenCV wants the YAML directive to detect the format from memory.
-        const bool hasDirective = text.rfind("%YAML", 0) == 0;
-        fs.open(hasDirective ? text : "%YAML:1.0\n" + text, cv::FileStorage::READ | cv::FileStorage::MEMORY |
-                                                              cv::FileStorage::FORMAT_YAML);
-    } catch (const cv::Exception& e) {
-        out.error = parseIssue(fileName, e);
-        if (out.error->line > 0 && text.rfind("%YAML", 0) != 0) --out.error->line;  // our added line
+    if (const auto err = openYamlText(text, fs)) {
+        out.error = ConfigIssue{ConfigIssueKind::ParseError, fileName, err->line, "", "not a valid YAML config: " + err->message};
         return out;
     }
-    if (!fs.isOpened()) return fail(ConfigIssueKind::ParseError, "", "not a valid YAML config");
     const cv::FileNode root = fs.root();
     if (!root.isMap()) return fail(ConfigIssueKind::NotAConfig, "", "the top level is not a map of sections");
 

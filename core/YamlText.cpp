@@ -1,0 +1,28 @@
+#include "YamlText.h"
+
+#include <regex>
+
+namespace omnitune {
+
+std::optional<YamlParseError> openYamlText(const std::string& text, cv::FileStorage& fs)
+{
+    const bool hasDirective = text.rfind("%YAML", 0) == 0;
+    try {
+        fs.open(hasDirective ? text : "%YAML:1.0\n" + text,
+                cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
+    } catch (const cv::Exception& e) {
+        // OpenCV's parse errors read "...(line): message" in several shapes.
+        YamlParseError err{0, e.err};
+        std::smatch m;
+        const std::string msg = e.msg;
+        if (std::regex_search(msg, m, std::regex(R"(\((\d+)\): ([^\n]*))"))) {
+            err.line = std::max(0, std::stoi(m[1]) - (hasDirective ? 0 : 1));
+            err.message = m[2];
+        }
+        return err;
+    }
+    if (!fs.isOpened()) return YamlParseError{0, "not YAML"};
+    return std::nullopt;
+}
+
+}  // namespace omnitune
