@@ -3,10 +3,14 @@
 #include "ConfigParser.h"
 #include "Session.h"
 
+#include <opencv2/core/utils/logger.hpp>
+
 #include <filesystem>
 #include <iostream>
 
 namespace omnitune {
+
+void quietOpenCvLogs() { cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_ERROR); }
 
 std::optional<Config> loadToolConfig(const std::optional<std::string>& configPath, const std::string& inputPath,
                                      const std::optional<std::string>& algorithm, std::string& error)

@@ -8,6 +8,9 @@
 
 namespace omnitune {
 
+// OpenCV's own log lines (video backends probing a file) would break the tools' one-line errors.
+void quietOpenCvLogs();
+
 std::optional<Config> loadToolConfig(const std::optional<std::string>& configPath, const std::string& inputPath,
                                      const std::optional<std::string>& algorithm, std::string& error);
 

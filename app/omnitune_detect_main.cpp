@@ -46,6 +46,7 @@ void saveStages(const std::string& dir, int index, const StageImages& s)
 
 int main(int argc, char** argv)
 {
+    quietOpenCvLogs();
     const CommandLine cl = parseCommandLine(argc, argv, kOptions);
     if (cl.has("help")) {
         std::cout << usageText("omnitune-detect", "Runs the ball detector over every frame of an input.", kOptions);
@@ -55,12 +56,13 @@ int main(int argc, char** argv)
     if (!cl.has("input")) return fail("--input is required (see --help)");
     const std::string input = *cl.value("input");
 
+    // The input first: a path that does not exist is the fault to report, not its missing config.
+    auto opened = openFrameSource(input);
+    if (!opened.ok()) return fail(opened.error);
+    for (const auto& w : opened.warnings) std::cerr << "warning: " << w << "\n";
     std::string error;
     const auto config = loadToolConfig(cl.value("config"), input, cl.value("algorithm"), error);
     if (!config) return fail(error);
-    auto opened = openFrameSource(input);
-    for (const auto& w : opened.warnings) std::cerr << "warning: " << w << "\n";
-    if (!opened.ok()) return fail(opened.error);
 
     std::ofstream file;
     if (auto out = cl.value("out")) {

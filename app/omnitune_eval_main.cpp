@@ -34,6 +34,7 @@ int fail(const std::string& why)
 
 int main(int argc, char** argv)
 {
+    quietOpenCvLogs();
     const CommandLine cl = parseCommandLine(argc, argv, kOptions);
     if (cl.has("help")) {
         std::cout << usageText("omnitune-eval", "Evaluates the detector against sessions' ground truth (thesis ch. 5).",

@@ -7,6 +7,9 @@
 #include "StderrProgress.h"
 #include "Tour.h"
 
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 using namespace omnitune;
@@ -40,6 +43,13 @@ int fail(const std::string& why)
     return 1;
 }
 
+std::string formatRange(double min, double max)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%g..%g", min, max);
+    return buf;
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -58,30 +68,37 @@ int main(int argc, char** argv)
         if (!kind) return fail("unknown --ball '" + *b + "' (see --help)");
         tour.ball = *kind;
     }
-    // Numeric options: each names itself when it is not a number.
-    auto number = [&](const char* name, double& target) {
+    // Numeric options: each is checked against its range and names itself when it is off.
+    auto number = [&](const char* name, double min, double max, double& target) {
         if (auto v = cl.value(name)) {
             const auto d = parseDouble(*v);
-            if (!d) throw std::invalid_argument(std::string("--") + name + " needs a number, not '" + *v + "'");
+            if (!d || !std::isfinite(*d) || *d < min || *d > max)
+                throw std::invalid_argument(std::string("--") + name + " must be a number in " + formatRange(min, max) +
+                                            ", not '" + *v + "'");
             target = *d;
         }
     };
-    double frames = tour.frames;
-    double seed = tour.seed;
+    auto integer = [&](const char* name, int min, int max, int& target) {
+        if (auto v = cl.value(name)) {
+            const auto i = parseInt(*v);
+            if (!i || *i < min || *i > max)
+                throw std::invalid_argument(std::string("--") + name + " must be a whole number in " +
+                                            std::to_string(min) + ".." + std::to_string(max) + ", not '" + *v + "'");
+            target = *i;
+        }
+    };
+    int seed = int(tour.seed);
     try {
-        number("frames", frames);
-        number("seed", seed);
-        number("ball-x", tour.ballX);
-        number("ball-y", tour.ballY);
-        number("light", tour.lightLevel);
-        number("gradient", tour.lightGradient);
-        number("noise", tour.noiseSigma);
+        integer("frames", 1, 100000, tour.frames);
+        integer("seed", 0, 2147483647, seed);
+        number("ball-x", -20, 20, tour.ballX);
+        number("ball-y", -20, 20, tour.ballY);
+        number("light", 0.05, 5, tour.lightLevel);
+        number("gradient", 0, 1, tour.lightGradient);
+        number("noise", 0, 100, tour.noiseSigma);
     } catch (const std::invalid_argument& e) {
         return fail(e.what());
     }
-    if (frames < 1 || frames > 100000) return fail("--frames must be 1..100000");
-    if (seed < 0) return fail("--seed must not be negative");
-    tour.frames = int(frames);
     tour.seed = unsigned(seed);
     tour.shadow = cl.has("shadow");
     tour.feet = cl.has("feet");
@@ -108,6 +125,9 @@ int main(int argc, char** argv)
                      ", " + std::to_string(tour.frames) + " frames, seed " + std::to_string(tour.seed) +
                      (tour.shadow ? ", head shadow" : "") + (tour.feet ? ", feet" : "") +
                      (tour.obstacles ? "" : ", no obstacles");
+        const std::string out = *cl.value("out");
+        if (!cl.has("overwrite") && std::filesystem::exists(std::filesystem::path(out) / kSessionInfoFile))
+            return fail(out + " already holds a session: choose another folder or pass --overwrite");
         SessionWriterOptions writerOptions;
         writerOptions.overwrite = cl.has("overwrite");
         if (auto level = cl.value("compression")) {
@@ -115,7 +135,7 @@ int main(int argc, char** argv)
             if (!v || *v < 0 || *v > 9) return fail("--compression must be 0..9, not '" + *level + "'");
             writerOptions.pngCompression = *v;
         }
-        SessionCreate created = SessionWriter::create(*cl.value("out"), info, writerOptions);
+        SessionCreate created = SessionWriter::create(out, info, writerOptions);
         if (!created.writer) return fail(created.error->toString());
         SessionWriter& writer = *created.writer;
         if (auto err = writer.writeConfig(config)) return fail(err->toString());

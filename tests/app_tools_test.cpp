@@ -327,16 +327,16 @@ private slots:
         QTest::newRow("unknown option") << QStringList{"--colour", "red"} << QStringList{"--colour"} << "";
         QTest::newRow("frames fractional")
             << QStringList{"--frames", "2.5"} << QStringList{"--frames", "2.5"}
-            << "sim parses --frames as a double and silently renders 2 frames for 2.5";
+            << "";
         QTest::newRow("seed beyond unsigned")
             << QStringList{"--seed", "5000000000"} << QStringList{"--seed"}
-            << "sim casts a seed of 5e9 to unsigned (undefined behaviour) and renders";
+            << "";
         QTest::newRow("ball-x nan") << QStringList{"--ball-x", "nan"} << QStringList{"--ball-x"}
-                                    << "sim accepts nan, writes nan robot poses its own truth reader rejects";
+                                    << "";
         QTest::newRow("gradient above 1") << QStringList{"--gradient", "5"} << QStringList{"--gradient"}
-                                          << "--help says 0..1 but sim renders with any gradient";
+                                          << "";
         QTest::newRow("noise negative") << QStringList{"--noise", "-3"} << QStringList{"--noise"}
-                                        << "sim renders with a negative noise sigma";
+                                        << "";
     }
 
     void simRejectsBadArguments()
@@ -380,7 +380,6 @@ private slots:
         QCOMPARE(parseCsv(readBytes(dir + "/truth.csv")).rows.size(), 2);
         QVERIFY(QString::fromUtf8(readBytes(dir + "/session.yml")).contains("frame_count: 2"));
 
-        QEXPECT_FAIL("", "the refusal says 'allow overwriting it' but not how: no mention of --overwrite", Continue);
         QVERIFY2(again.errLines()[0].contains("--overwrite"), qPrintable(again.describe()));
     }
 
@@ -503,8 +502,7 @@ private slots:
                                               << QStringList{"@T/no-such-session", "no such"} << "" << false;
         QTest::newRow("input does not exist, no --config")
             << QStringList{"--input", "@T/no-such-session"} << QStringList{"@T/no-such-session", "no such"}
-            << "looks for config.yml in the input first: says it 'holds no config.yml', not that it does not exist"
-            << false;
+            << "" << false;
         QTest::newRow("folder without images") << QStringList{"--input", "@T/no-images", "--config", cfg}
                                                << QStringList{"@T/no-images"} << "" << false;
         QTest::newRow("glob matching nothing") << QStringList{"--input", "@T/no-images/*.png", "--config", cfg}
@@ -525,8 +523,7 @@ private slots:
                                         << QStringList{"@T/none.yml"} << "" << false;
         QTest::newRow("not a video") << QStringList{"--input", "@T/junk.avi", "--config", cfg}
                                      << QStringList{"@T/junk.avi"}
-                                     << "OpenCV's video backends (GStreamer here) log '[ WARN' lines to stderr first"
-                                     << true;
+                                     << "" << false;
     }
 
     void detectRejectsBadInput()
