@@ -1,0 +1,233 @@
+// The candidate table (thesis Table 4.1 extended): a well-behaved Qt model, the texts of each
+// column, the accepted row highlighted, the failing score of a rejected row in red.
+#include "CandidateTableModel.h"
+#include "Config.h"
+
+#include <QAbstractItemModelTester>
+#include <QBrush>
+#include <QSignalSpy>
+#include <QtTest>
+
+Q_DECLARE_METATYPE(omnitune::RejectReason)
+
+using namespace omnitune;
+using Col = CandidateTableModel::Column;
+
+namespace {
+
+BallCandidate makeCandidate(CandidateSource source, int area, int x, int y, RejectReason rejected)
+{
+    BallCandidate c;
+    c.source = source;
+    c.area = area;
+    c.x = x;
+    c.y = y;
+    c.rejected = rejected;
+    return c;
+}
+
+// One accepted specific-Hough ball and one OpenCV circle rejected by circularity.
+PipelineResult twoCandidates()
+{
+    PipelineResult r;
+    BallCandidate ball = makeCandidate(CandidateSource::SpecificHough, 2, 312, 187, RejectReason::None);
+    ball.radiusPx = 7.26;
+    ball.expectedRadiusPx = 7.26;
+    ball.distancePx = 131.04;
+    ball.accumulator = 412;
+    ball.scores = {96.44, 88.06, 91.67, 0.4};
+    BallCandidate line = makeCandidate(CandidateSource::OpenCvHough, -1, 90, 401, RejectReason::Circularity);
+    line.radiusPx = 11.5;
+    line.expectedRadiusPx = 10.92;
+    line.distancePx = 212.3;
+    line.scores = {91.2, 77.7, 41.66, 2.1};
+    r.candidates = {ball, line};
+    r.detection.found = true;
+    r.detection.candidate = 0;
+    return r;
+}
+
+PipelineResult withCount(int n)
+{
+    PipelineResult r;
+    for (int i = 0; i < n; ++i)
+        r.candidates.push_back(makeCandidate(CandidateSource::SpecificHough, i, 10 * i, 20 * i,
+                                             i == 0 ? RejectReason::None : RejectReason::NotChosen));
+    return r;
+}
+
+bool reddish(const QVariant& v)
+{
+    const QColor c = v.value<QBrush>().color();
+    return v.isValid() && c.red() > c.green() + 40 && c.red() > c.blue() + 40;
+}
+
+bool greenish(const QVariant& v)
+{
+    const QColor c = v.value<QBrush>().color();
+    return v.isValid() && c.green() > c.red() + 20 && c.green() > c.blue() + 20;
+}
+
+}  // namespace
+
+class CandidateModelTest : public QObject {
+    Q_OBJECT
+private slots:
+    void resetsUnderModelTester();
+    void displayTexts_data();
+    void displayTexts();
+    void acceptedRowHighlighted();
+    void failingCellRed_data();
+    void failingCellRed();
+    void headerAndTooltips();
+    void thresholdsInTooltips();
+    void candidateAccessor();
+};
+
+void CandidateModelTest::resetsUnderModelTester()
+{
+    CandidateTableModel model;
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QSignalSpy resets(&model, &QAbstractItemModel::modelReset);
+    QCOMPARE(model.rowCount(), 0);
+    QCOMPARE(model.columnCount(), int(Col::ColumnCount));
+    int expectedResets = 0;
+    for (int n : {0, 3, 1, 0, 2}) {
+        model.setResult(withCount(n));
+        QCOMPARE(resets.count(), ++expectedResets);
+        QCOMPARE(model.rowCount(), n);
+        QCOMPARE(model.rowCount(model.index(0, 0)), 0);  // a table: no children
+        QCOMPARE(model.acceptedRow(), n > 0 ? 0 : -1);
+        for (int row = 0; row < n; ++row) QCOMPARE(model.index(row, Col::XColumn).data().toString(), QString::number(10 * row));
+    }
+    model.setThresholds(Config{});  // dataChanged / headerDataChanged checked by the tester
+    model.clear();
+    QCOMPARE(model.rowCount(), 0);
+}
+
+void CandidateModelTest::displayTexts_data()
+{
+    QTest::addColumn<int>("row");
+    QTest::addColumn<int>("column");
+    QTest::addColumn<QString>("text");
+    QTest::newRow("area is 1-based") << 0 << int(Col::AreaColumn) << "3";
+    QTest::newRow("no area for OpenCV") << 1 << int(Col::AreaColumn) << "-";
+    QTest::newRow("source specific") << 0 << int(Col::SourceColumn) << "specific";
+    QTest::newRow("source opencv") << 1 << int(Col::SourceColumn) << "opencv";
+    QTest::newRow("x") << 0 << int(Col::XColumn) << "312";
+    QTest::newRow("y") << 1 << int(Col::YColumn) << "401";
+    QTest::newRow("radius 1 decimal") << 0 << int(Col::RadiusColumn) << "7.3";
+    QTest::newRow("distance") << 1 << int(Col::DistanceColumn) << "212.3";
+    QTest::newRow("accumulator") << 0 << int(Col::AccumulatorColumn) << "412";
+    QTest::newRow("no votes for OpenCV") << 1 << int(Col::AccumulatorColumn) << "-";
+    QTest::newRow("non-green") << 0 << int(Col::NonGreenColumn) << "96.4";
+    QTest::newRow("non-black") << 1 << int(Col::NonBlackColumn) << "77.7";
+    QTest::newRow("circularity") << 1 << int(Col::CircularityColumn) << "41.7";
+    QTest::newRow("accepted") << 0 << int(Col::ResultColumn) << "accepted";
+    QTest::newRow("rejected") << 1 << int(Col::ResultColumn) << "circularity";
+}
+
+void CandidateModelTest::displayTexts()
+{
+    QFETCH(int, row);
+    QFETCH(int, column);
+    QFETCH(QString, text);
+    CandidateTableModel model;
+    model.setResult(twoCandidates());
+    QCOMPARE(model.rowCount(), 2);
+    QCOMPARE(model.index(row, column).data(Qt::DisplayRole).toString(), text);
+}
+
+void CandidateModelTest::acceptedRowHighlighted()
+{
+    CandidateTableModel model;
+    model.setResult(twoCandidates());
+    QCOMPARE(model.acceptedRow(), 0);
+    for (int col = 0; col < model.columnCount(); ++col) {
+        QVERIFY2(greenish(model.index(0, col).data(Qt::BackgroundRole)), qPrintable(QString::number(col)));
+        QVERIFY(!greenish(model.index(1, col).data(Qt::BackgroundRole)));
+    }
+    QVERIFY(model.index(0, Col::XColumn).data(Qt::FontRole).value<QFont>().bold());
+}
+
+void CandidateModelTest::failingCellRed_data()
+{
+    QTest::addColumn<RejectReason>("reason");
+    QTest::addColumn<int>("failing");  // -1: no score cell is red
+    QTest::newRow("circularity") << RejectReason::Circularity << int(Col::CircularityColumn);
+    QTest::newRow("non-green") << RejectReason::NonGreen << int(Col::NonGreenColumn);
+    QTest::newRow("non-black") << RejectReason::NonBlack << int(Col::NonBlackColumn);
+    QTest::newRow("too far") << RejectReason::TooSmall << int(Col::RadiusColumn);
+    QTest::newRow("radius too large") << RejectReason::RadiusTooLarge << int(Col::RadiusColumn);
+    QTest::newRow("valid, not chosen") << RejectReason::NotChosen << -1;
+}
+
+void CandidateModelTest::failingCellRed()
+{
+    QFETCH(RejectReason, reason);
+    QFETCH(int, failing);
+    PipelineResult r = twoCandidates();
+    r.candidates[1].rejected = reason;
+    CandidateTableModel model;
+    model.setResult(r);
+    for (int col = 0; col < model.columnCount(); ++col) {
+        const QModelIndex cell = model.index(1, col);
+        const bool red = col == failing;
+        QCOMPARE(reddish(cell.data(Qt::BackgroundRole)), red);
+        QCOMPARE(reddish(cell.data(Qt::ForegroundRole)), red || (col == Col::ResultColumn && failing >= 0));
+        QCOMPARE(reddish(model.index(0, col).data(Qt::BackgroundRole)), false);
+    }
+    if (failing >= 0) QVERIFY(model.index(1, failing).data(Qt::ToolTipRole).toString().contains(QStringLiteral("Rejected here")));
+}
+
+void CandidateModelTest::headerAndTooltips()
+{
+    CandidateTableModel model;
+    model.setResult(twoCandidates());
+    QCOMPARE(model.headerData(Col::CircularityColumn, Qt::Horizontal).toString(), QStringLiteral("Circularity %"));
+    QCOMPARE(model.headerData(Col::ResultColumn, Qt::Horizontal).toString(), QStringLiteral("Result"));
+    QStringList headers;
+    for (int col = 0; col < model.columnCount(); ++col) {
+        const QString header = model.headerData(col, Qt::Horizontal).toString();
+        QVERIFY(!header.isEmpty());
+        QVERIFY(!headers.contains(header));
+        headers << header;
+        QVERIFY2(model.headerData(col, Qt::Horizontal, Qt::ToolTipRole).toString().size() > 20, qPrintable(header));
+        QCOMPARE(model.index(0, col).data(Qt::ToolTipRole).toString().left(20),
+                 model.headerData(col, Qt::Horizontal, Qt::ToolTipRole).toString().left(20));
+    }
+    const QString circ = model.headerData(Col::CircularityColumn, Qt::Horizontal, Qt::ToolTipRole).toString();
+    QVERIFY2(circ.contains(QStringLiteral("validation.min_circularity_pct")) && circ.contains(QStringLiteral("70.0 %")), qPrintable(circ));
+    const QString failed = model.index(1, Col::CircularityColumn).data(Qt::ToolTipRole).toString();
+    QVERIFY2(failed.contains(QStringLiteral("41.7 % is below 70.0 %")), qPrintable(failed));
+}
+
+void CandidateModelTest::thresholdsInTooltips()
+{
+    CandidateTableModel model;
+    model.setResult(twoCandidates());
+    QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+    qRegisterMetaType<Qt::Orientation>();
+    QSignalSpy headers(&model, &QAbstractItemModel::headerDataChanged);
+    Config config;
+    config.validation.minNonGreenPct = 62.5;
+    model.setThresholds(config);
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(headers.count(), 1);
+    const QString tip = model.headerData(Col::NonGreenColumn, Qt::Horizontal, Qt::ToolTipRole).toString();
+    QVERIFY2(tip.contains(QStringLiteral("62.5 %")) && tip.contains(QStringLiteral("validation.min_non_green_pct")), qPrintable(tip));
+}
+
+void CandidateModelTest::candidateAccessor()
+{
+    CandidateTableModel model;
+    const PipelineResult r = twoCandidates();
+    model.setResult(r);
+    QCOMPARE(model.candidate(1).x, 90);
+    QCOMPARE(model.candidate(1).rejected, RejectReason::Circularity);
+    QCOMPARE(model.candidate(0).accumulator, 412.0);
+    QCOMPARE(model.index(1, Col::CircularityColumn).data(CandidateTableModel::SortRole).toDouble(), 41.66);
+}
+
+QTEST_MAIN(CandidateModelTest)
+#include "widgets_candidate_model_test.moc"

@@ -1,0 +1,78 @@
+#pragma once
+// The ball candidates of one pipeline result as a table (thesis Table 4.1, extended): where
+// each candidate is, its radius and Hough votes, its three validation scores and the test that
+// rejected it. The accepted ball's row is highlighted; in a rejected row the failing cell is
+// red. Tooltips explain each column and the threshold it was compared against.
+#include "BallCandidate.h"
+#include "PipelineResult.h"
+
+#include <QAbstractTableModel>
+
+#include <vector>
+
+namespace omnitune {
+
+struct Config;
+
+class CandidateTableModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    enum Column {
+        AreaColumn,
+        SourceColumn,
+        XColumn,
+        YColumn,
+        RadiusColumn,
+        DistanceColumn,
+        AccumulatorColumn,
+        NonGreenColumn,
+        NonBlackColumn,
+        CircularityColumn,
+        ResultColumn,
+        ColumnCount
+    };
+    // Qt::UserRole: the cell's raw value (number or text) for sorting and plotting.
+    static constexpr int SortRole = Qt::UserRole;
+
+    explicit CandidateTableModel(QObject* parent = nullptr);
+
+    // Replaces all rows (a model reset).
+    void setResult(const PipelineResult& result);
+    void clear();
+    // The thresholds quoted in the tooltips (defaults until set): validation.*,
+    // hough.min_accumulator and opencv_hough.max_radius_ratio.
+    void setThresholds(const Config& config);
+
+    const BallCandidate& candidate(int row) const;
+    // Row of the accepted ball, -1 when none was accepted.
+    int acceptedRow() const;
+    // The column holding the score that rejected the candidate, -1 when none does (accepted,
+    // valid but not chosen, outside the processed area).
+    static int failingColumn(RejectReason reason);
+
+    int rowCount(const QModelIndex& parent = QModelIndex()) const override;
+    int columnCount(const QModelIndex& parent = QModelIndex()) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+private:
+    struct Thresholds {
+        double minNonGreenPct;
+        double minNonBlackPct;
+        double minCircularityPct;
+        double radiusTolerance;
+        double minRadiusPx;
+        int minAccumulator;
+        double maxRadiusRatio;
+    };
+
+    QVariant display(const BallCandidate& c, int column) const;
+    QVariant sortValue(const BallCandidate& c, int column) const;
+    QString columnToolTip(int column) const;
+    QString cellToolTip(const BallCandidate& c, int column) const;
+
+    std::vector<BallCandidate> candidates_;
+    Thresholds thresholds_;
+};
+
+}  // namespace omnitune

@@ -1,0 +1,63 @@
+#pragma once
+// The detector's thresholds (edges, both Hough paths, validation, algorithm) as a scrollable
+// column of editors built from the config schema: one group per section, one row per key, with
+// the schema's range, unit and meaning (as tooltip). Edits go through ConfigDocument::setValue;
+// a refused edit puts the editor back and shows why. Document changes (undo, redo, load) update
+// the editors without editing again, except one the user is typing in: it follows the document
+// when it loses focus.
+#include "ConfigSchema.h"
+
+#include <QHash>
+#include <QList>
+#include <QSet>
+#include <QString>
+#include <QWidget>
+
+class QFormLayout;
+class QLabel;
+
+namespace omnitune {
+
+class ConfigDocument;
+
+class ThresholdPanel : public QWidget {
+    Q_OBJECT
+public:
+    // `doc` must outlive the panel.
+    explicit ThresholdPanel(ConfigDocument* doc, QWidget* parent = nullptr);
+    ~ThresholdPanel() override;
+
+    // The config sections shown, in order ("edges", "hough", ...).
+    static QStringList sections();
+
+    // The editor of a schema key ("edges.canny_low"), nullptr when the panel has none. Editors are
+    // QSpinBox, QDoubleSpinBox, QCheckBox, QComboBox or QLineEdit; their objectName is the key.
+    QWidget* editorFor(const QString& key) const;
+    // The message of the last refused edit; empty after a successful one.
+    QString statusMessage() const;
+
+signals:
+    void editRefused(const QString& message);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    void addEditor(const ConfigKey& key, QFormLayout* form);
+    // Edits the document; false (editor reverted or marked, message shown) when refused.
+    bool apply(const QString& key, const ConfigValue& value);
+    void applyListText(const QString& key);
+    void refuse(const QString& message);
+    void onDocumentChanged(const QString& key);
+    void syncEditor(const QString& key);
+    void setInvalid(QWidget* editor, bool invalid);
+    void setStatus(const QString& message);
+
+    ConfigDocument* doc_;
+    QHash<QString, QWidget*> editors_;
+    QList<QLabel*> labels_;
+    QSet<QString> typing_;  // keys whose editor holds text the user has typed but not committed
+    QLabel* status_ = nullptr;
+};
+
+}  // namespace omnitune
