@@ -1,0 +1,298 @@
+#include "MainWindow.h"
+
+#include "CandidateTableModel.h"
+#include "FrameNavigator.h"
+#include "FrameSourceFactory.h"
+#include "PipelineView.h"
+#include "PixelInspector.h"
+#include "Session.h"
+#include "ThresholdPanel.h"
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QTableView>
+#include <QVBoxLayout>
+
+#include <filesystem>
+
+namespace omnitune {
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), view_(new PipelineView(this)), nav_(new FrameNavigator(this)),
+      panel_(new ThresholdPanel(&doc_, this)), candidates_(new CandidateTableModel(this)),
+      resultLabel_(new QLabel(this)), timingLabel_(new QLabel(this)), pixelLabel_(new QLabel(this))
+{
+    auto* central = new QWidget(this);
+    auto* layout = new QVBoxLayout(central);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->setSpacing(2);
+    resultLabel_->setObjectName("result");
+    resultLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(view_, 1);
+    layout->addWidget(resultLabel_);
+    layout->addWidget(nav_);
+    setCentralWidget(central);
+
+    auto* panelDock = new QDockWidget(tr("Thresholds"), this);
+    panelDock->setObjectName("thresholds");
+    panelDock->setWidget(panel_);
+    addDockWidget(Qt::RightDockWidgetArea, panelDock);
+
+    auto* table = new QTableView(this);
+    table->setObjectName("candidateTable");
+    table->setModel(candidates_);
+    table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table->verticalHeader()->hide();
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    auto* tableDock = new QDockWidget(tr("Candidates (thesis Table 4.1)"), this);
+    tableDock->setObjectName("candidates");
+    tableDock->setWidget(table);
+    addDockWidget(Qt::RightDockWidgetArea, tableDock);
+    connect(table, &QTableView::clicked, this, [this](const QModelIndex& index) {
+        const BallCandidate& c = candidates_->candidate(index.row());
+        view_->transform()->centerOn(QPointF(c.x, c.y));
+    });
+
+    statusBar()->addWidget(pixelLabel_, 1);
+    statusBar()->addPermanentWidget(timingLabel_);
+
+    connect(nav_, &FrameNavigator::frameRequested, this, &MainWindow::showFrame);
+    connect(&runner_, &PipelineRunner::finished, this, &MainWindow::onRunFinished);
+    connect(&doc_, &ConfigDocument::changed, this, [this] {
+        ++generation_;  // "repeat frame": every change re-runs the frame on screen
+        requestRun();
+    });
+    connect(&doc_, &ConfigDocument::dirtyChanged, this, &MainWindow::updateTitle);
+    connect(&doc_, &ConfigDocument::pathChanged, this, &MainWindow::updateTitle);
+    connect(view_, &PipelineView::hovered, this, [this](QPointF p) {
+        pixelLabel_->setText(lastRun_ ? describePixel(*lastRun_, doc_.config(), p) : QString());
+    });
+    connect(view_, &PipelineView::left, pixelLabel_, &QLabel::clear);
+    connect(panel_, &ThresholdPanel::editRefused, this, [this](const QString& why) { statusBar()->showMessage(why, 8000); });
+
+    buildMenus();
+    updateTitle();
+    resize(1366, 768);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildMenus()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&Open session, video or images..."), this, &MainWindow::chooseSource, QKeySequence::Open);
+    file->addAction(tr("Open &config..."), this, &MainWindow::chooseConfig);
+    file->addSeparator();
+    file->addAction(tr("&Save config"), this, &MainWindow::saveConfig, QKeySequence::Save);
+    file->addAction(tr("Save config &as..."), this, &MainWindow::saveConfigAs, QKeySequence::SaveAs);
+    file->addAction(tr("&Revert to saved"), this, [this] {
+        if (const auto err = doc_.revert()) QMessageBox::warning(this, tr("Revert"), *err);
+    });
+    file->addSeparator();
+    file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = doc_.undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = doc_.undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(tr("&Fit all panes"), view_->transform(), &ViewTransform::fit, QKeySequence(Qt::Key_F));
+    view->addAction(tr("&1:1"), this, [this] {
+        const auto c = view_->transform()->isFit() ? QPointF(doc_.config().geometry.imageWidth / 2.0,
+                                                              doc_.config().geometry.imageHeight / 2.0)
+                                                    : view_->transform()->center();
+        view_->transform()->setZoom(1.0, c);
+    }, QKeySequence(Qt::Key_1));
+    view->addSeparator();
+    OverlayOptions& o = view_->overlays();
+    const std::pair<QString, bool*> toggles[] = {
+        {tr("Robot centre and mask radii"), &o.geometry}, {tr("Radial areas"), &o.areas},
+        {tr("Radial sensors"), &o.sensors},               {tr("Candidates with scores"), &o.candidates},
+        {tr("Accepted ball"), &o.ball},                    {tr("Expected ball under the cursor"), &o.cursorRadius}};
+    for (const auto& [name, flag] : toggles) {
+        QAction* a = view->addAction(name);
+        a->setCheckable(true);
+        a->setChecked(*flag);
+        connect(a, &QAction::toggled, this, [this, flag = flag](bool on) {
+            *flag = on;
+            for (int i = 0; i < PipelineView::kPaneCount; ++i) view_->pane(i)->update();
+        });
+    }
+
+    // Playback keys work anywhere in the window but in text fields.
+    const std::pair<QKeySequence, void (FrameNavigator::*)()> keys[] = {
+        {Qt::Key_Space, &FrameNavigator::togglePlay}, {Qt::Key_Right, &FrameNavigator::next},
+        {Qt::Key_Left, &FrameNavigator::previous},    {Qt::Key_Home, &FrameNavigator::first},
+        {Qt::Key_End, &FrameNavigator::last}};
+    QMenu* play = menuBar()->addMenu(tr("&Playback"));
+    const QString names[] = {tr("Play / pause"), tr("Next frame"), tr("Previous frame"), tr("First frame"), tr("Last frame")};
+    for (int i = 0; i < 5; ++i) {
+        QAction* a = play->addAction(names[i], nav_, keys[i].second);
+        a->setShortcut(keys[i].first);
+    }
+}
+
+bool MainWindow::openSource(const QString& path)
+{
+    SourceOpen<FrameSource> opened = openFrameSource(path.toStdString());
+    if (!opened.ok()) {
+        QMessageBox::warning(this, tr("Cannot open"), QString::fromStdString(opened.error));
+        return false;
+    }
+    if (!opened.warnings.empty()) {
+        QStringList w;
+        for (const auto& s : opened.warnings) w << QString::fromStdString(s);
+        statusBar()->showMessage(w.join("; "), 10000);
+    }
+    // A session brings its own config: use it unless that would throw away unsaved edits.
+    const auto sessionConfig = std::filesystem::path(path.toStdString()) / kSessionConfigFile;
+    if (std::filesystem::is_regular_file(sessionConfig) && (doc_.path().isEmpty() || maybeSave()))
+        openConfig(QString::fromStdString(sessionConfig.string()));
+    source_ = std::move(opened.source);
+    sourceName_ = QFileInfo(path).fileName();
+    nav_->setFrameCount(source_->frameCount());
+    nav_->setFrameRate(doc_.config().camera.frameRate);
+    updateTitle();
+    showFrame(0);
+    return true;
+}
+
+bool MainWindow::openConfig(const QString& path)
+{
+    QStringList warnings;
+    if (const auto err = doc_.load(path, &warnings)) {
+        QMessageBox::critical(this, tr("Cannot load the config"), *err);
+        return false;
+    }
+    if (!warnings.isEmpty()) statusBar()->showMessage(warnings.join("; "), 10000);
+    return true;
+}
+
+void MainWindow::showFrame(int index)
+{
+    if (!source_) return;
+    const auto err = source_->read(index, frame_);
+    nav_->setCurrent(index);
+    if (err) {
+        haveFrame_ = false;
+        resultLabel_->setText(tr("Frame %1 skipped: %2").arg(index).arg(QString::fromStdString(err->toString())));
+        return;
+    }
+    haveFrame_ = true;
+    requestRun();
+}
+
+void MainWindow::requestRun()
+{
+    if (haveFrame_) runner_.request(frame_.index, frame_.image, frame_.format, doc_.config(), generation_);
+}
+
+bool MainWindow::isProcessing() const { return runner_.isBusy(); }
+
+void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
+{
+    lastRun_ = run;
+    if (!run->error.isEmpty() || !run->result.ok()) {
+        resultLabel_->setText(tr("Frame %1: %2").arg(run->frameIndex).arg(run->error.isEmpty() ? QString::fromStdString(run->result.error) : run->error));
+        emit runShown(run->frameIndex);
+        return;
+    }
+    auto overlay = std::make_shared<OverlayData>();
+    overlay->config = doc_.config();
+    overlay->candidates = run->result.candidates;
+    overlay->detection = run->result.detection;
+    view_->showRun(*run, overlay);
+    candidates_->setResult(run->result);
+
+    const BallDetection& d = run->result.detection;
+    if (d.found) {
+        resultLabel_->setText(tr("Frame %1: ball at x %2 m, y %3 m (%4 m away, radius %5 px)")
+                                  .arg(run->frameIndex).arg(d.xM, 0, 'f', 2).arg(d.yM, 0, 'f', 2)
+                                  .arg(d.distanceM, 0, 'f', 2).arg(d.radiusPx, 0, 'f', 1));
+    } else {
+        resultLabel_->setText(tr("Frame %1: no ball. %2 candidate(s); see the table for the test each failed")
+                                  .arg(run->frameIndex).arg(run->result.candidates.size()));
+    }
+    const StageTimings& t = run->result.timings;
+    averageMs_ = (averageMs_ * averaged_ + t.totalMs) / (averaged_ + 1);
+    averaged_ = std::min(averaged_ + 1, 99);  // a running average over about the last 100 frames
+    timingLabel_->setText(tr("segment %1 | binary %2 | edges %3 | Hough %4 | validation %5 | total %6 ms (avg %7)")
+                              .arg(t.segmentMs, 0, 'f', 1).arg(t.binaryMs, 0, 'f', 1).arg(t.edgesMs, 0, 'f', 1)
+                              .arg(t.houghMs, 0, 'f', 1).arg(t.validationMs, 0, 'f', 1).arg(t.totalMs, 0, 'f', 1)
+                              .arg(averageMs_, 0, 'f', 1));
+    emit runShown(run->frameIndex);
+}
+
+bool MainWindow::saveConfig()
+{
+    if (doc_.path().isEmpty()) return saveConfigAs();
+    if (const auto err = doc_.save()) {
+        QMessageBox::critical(this, tr("Cannot save the config"), *err);
+        return false;
+    }
+    statusBar()->showMessage(tr("Saved %1 (previous version kept as .bak)").arg(doc_.path()), 5000);
+    return true;
+}
+
+bool MainWindow::saveConfigAs()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save config"), doc_.path(), tr("Config (*.yml *.yaml)"));
+    if (path.isEmpty()) return false;
+    if (const auto err = doc_.saveAs(path)) {
+        QMessageBox::critical(this, tr("Cannot save the config"), *err);
+        return false;
+    }
+    return true;
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!doc_.isDirty()) return true;
+    const auto answer = QMessageBox::warning(this, tr("Unsaved changes"),
+                                             tr("The config has unsaved changes. Save them first?"),
+                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save) return saveConfig();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (maybeSave())
+        event->accept();
+    else
+        event->ignore();
+}
+
+void MainWindow::chooseSource()
+{
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open a session or image folder"));
+    if (!dir.isEmpty()) openSource(dir);
+}
+
+void MainWindow::chooseConfig()
+{
+    if (!maybeSave()) return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open config"), QString(), tr("Config (*.yml *.yaml)"));
+    if (!path.isEmpty()) openConfig(path);
+}
+
+void MainWindow::updateTitle()
+{
+    const QString config = doc_.path().isEmpty() ? tr("default config") : QFileInfo(doc_.path()).fileName();
+    setWindowTitle(tr("OmniTune - %1 - %2[*]").arg(sourceName_.isEmpty() ? tr("no source") : sourceName_, config));
+    setWindowModified(doc_.isDirty());
+}
+
+}  // namespace omnitune

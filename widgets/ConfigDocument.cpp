@@ -1,0 +1,121 @@
+#include "ConfigDocument.h"
+
+#include "ConfigParser.h"
+#include "ConfigWriter.h"
+
+#include <QUndoCommand>
+
+namespace omnitune {
+
+namespace {
+
+// One key changed from one value to another; consecutive edits of the same key (a slider
+// being dragged) merge into one undo step.
+class SetValueCommand : public QUndoCommand {
+public:
+    SetValueCommand(ConfigDocument* doc, QString key, ConfigValue before, ConfigValue after)
+        : doc_(doc), key_(std::move(key)), before_(std::move(before)), after_(std::move(after))
+    {
+        setText(QStringLiteral("%1 = %2").arg(key_, QString::fromStdString(formatConfigValue(after_))));
+    }
+    void undo() override { doc_->applyValue(key_, before_); }
+    void redo() override { doc_->applyValue(key_, after_); }
+    int id() const override { return 1; }
+    bool mergeWith(const QUndoCommand* other) override
+    {
+        const auto* o = static_cast<const SetValueCommand*>(other);
+        if (o->key_ != key_) return false;
+        after_ = o->after_;
+        setText(o->text());
+        return true;
+    }
+
+private:
+    ConfigDocument* doc_;
+    QString key_;
+    ConfigValue before_;
+    ConfigValue after_;
+};
+
+}  // namespace
+
+ConfigDocument::ConfigDocument(QObject* parent) : QObject(parent)
+{
+    connect(&undo_, &QUndoStack::cleanChanged, this, [this](bool clean) { emit dirtyChanged(!clean); });
+}
+
+ConfigValue ConfigDocument::value(const QString& key) const
+{
+    const ConfigKey* k = findConfigKey(key.toStdString());
+    Q_ASSERT(k);
+    return k->get(config_);
+}
+
+std::optional<QString> ConfigDocument::setValue(const QString& key, const ConfigValue& value)
+{
+    const ConfigKey* k = findConfigKey(key.toStdString());
+    if (!k) return QStringLiteral("unknown config key %1").arg(key);
+    const ConfigValue before = k->get(config_);
+    if (before == value) return std::nullopt;
+    Config trial = config_;
+    k->set(trial, value);
+    const auto problems = checkConfig(trial);
+    if (!problems.empty()) return QString::fromStdString(problems.front().toString());
+    undo_.push(new SetValueCommand(this, key, before, value));
+    return std::nullopt;
+}
+
+void ConfigDocument::applyValue(const QString& key, const ConfigValue& value)
+{
+    findConfigKey(key.toStdString())->set(config_, value);
+    emit changed(key);
+}
+
+std::optional<QString> ConfigDocument::load(const QString& path, QStringList* warnings)
+{
+    const ConfigLoad load = loadConfig(path.toStdString());
+    if (!load.ok()) return QString::fromStdString(load.error->toString());
+    if (warnings)
+        for (const auto& w : load.warnings) *warnings << QString::fromStdString(w.toString());
+    reset(load.config, path);
+    return std::nullopt;
+}
+
+std::optional<QString> ConfigDocument::save()
+{
+    if (path_.isEmpty()) return QStringLiteral("the config has no file yet: use Save As");
+    if (const auto err = saveConfig(config_, path_.toStdString())) return QString::fromStdString(err->toString());
+    undo_.setClean();
+    return std::nullopt;
+}
+
+std::optional<QString> ConfigDocument::saveAs(const QString& path)
+{
+    if (const auto err = saveConfig(config_, path.toStdString())) return QString::fromStdString(err->toString());
+    if (path != path_) {
+        path_ = path;
+        emit pathChanged(path_);
+    }
+    undo_.setClean();
+    return std::nullopt;
+}
+
+std::optional<QString> ConfigDocument::revert()
+{
+    if (path_.isEmpty()) return QStringLiteral("the config has no file to revert to");
+    return load(path_);
+}
+
+void ConfigDocument::reset(const Config& config, const QString& path)
+{
+    config_ = config;
+    undo_.clear();
+    if (path != path_) {
+        path_ = path;
+        emit pathChanged(path_);
+    }
+    emit changed(QString());
+    emit dirtyChanged(false);
+}
+
+}  // namespace omnitune

@@ -1,0 +1,57 @@
+#pragma once
+// The config the workbench edits: one core::Config, an undo stack of key changes, and where it
+// is saved. Every editor changes it through setValue() (one undoable command per change), so
+// the GUI never keeps a parallel copy. Loading and saving go through the core's parser and
+// atomic writer; a failed load leaves the current config untouched.
+#include "Config.h"
+#include "ConfigSchema.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <optional>
+
+namespace omnitune {
+
+class ConfigDocument : public QObject {
+    Q_OBJECT
+public:
+    explicit ConfigDocument(QObject* parent = nullptr);
+
+    const Config& config() const { return config_; }
+    QUndoStack* undoStack() { return &undo_; }
+    QString path() const { return path_; }
+    bool isDirty() const { return !undo_.isClean(); }
+
+    // Sets one schema key; a change that would make the config invalid (checkConfig) is
+    // refused and its message returned. No-op (and no undo entry) when the value is the same.
+    std::optional<QString> setValue(const QString& key, const ConfigValue& value);
+    ConfigValue value(const QString& key) const;
+
+    // Replaces the config with the file's; on error returns the message (file, key, fault) and
+    // changes nothing. Warnings (missing keys, ...) are returned through `warnings`.
+    std::optional<QString> load(const QString& path, QStringList* warnings = nullptr);
+    // Atomic save with backup (core::saveConfig); marks the document clean.
+    std::optional<QString> save();
+    std::optional<QString> saveAs(const QString& path);
+    // Back to the last loaded or saved state (clears the undo stack).
+    std::optional<QString> revert();
+    // A config that did not come from a file (defaults, a session's own): no path, clean.
+    void reset(const Config& config, const QString& path = {});
+
+    // Applied by the undo commands; not for editors.
+    void applyValue(const QString& key, const ConfigValue& value);
+
+signals:
+    void changed(const QString& key);  // empty key: everything may have changed
+    void dirtyChanged(bool dirty);
+    void pathChanged(const QString& path);
+
+private:
+    Config config_;
+    QString path_;
+    QUndoStack undo_;
+};
+
+}  // namespace omnitune

@@ -1,0 +1,60 @@
+#pragma once
+// One image pane: an image under the shared zoom/pan, a title, and the overlays. Wheel zooms
+// at the cursor, a drag pans (all panes follow through the shared ViewTransform).
+#include "Overlay.h"
+#include "ViewTransform.h"
+
+#include <QImage>
+#include <QWidget>
+
+#include <memory>
+
+namespace omnitune {
+
+class ImageView : public QWidget {
+    Q_OBJECT
+public:
+    ImageView(const QString& title, ViewTransform* transform, const OverlayOptions* overlays, QWidget* parent = nullptr);
+
+    void setImage(const QImage& image);
+    const QImage& image() const { return image_; }
+    void setOverlay(std::shared_ptr<const OverlayData> overlay);
+    QString title() const { return title_; }
+
+    // Widget position <-> image position under the current transform.
+    QPointF toImage(QPointF widgetPos) const;
+    QPointF toWidget(QPointF imagePos) const;
+
+signals:
+    void hovered(QPointF imagePos);
+    void left();
+    void doubleClicked();
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+
+private:
+    double scale() const;
+    QPointF imageCenter() const;
+    void paintOverlay(QPainter& p) const;
+
+    QString title_;
+    ViewTransform* transform_;
+    const OverlayOptions* overlays_;
+    QImage image_;
+    std::shared_ptr<const OverlayData> overlay_;
+    QPointF dragStart_;
+    bool dragging_ = false;
+    QPointF cursor_{-1, -1};  // image position under the mouse, or negative
+};
+
+// BGR (CV_8UC3) or grey (CV_8UC1) cv::Mat as a QImage (a deep copy).
+QImage toQImage(const cv::Mat& mat);
+
+}  // namespace omnitune

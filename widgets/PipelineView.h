@@ -1,0 +1,44 @@
+#pragma once
+// The five stage panes of thesis Fig. 4.6 plus the Hough accumulator, side by side under one
+// zoom/pan. Double-clicking a pane enlarges it; double-clicking again brings the others back.
+#include "ImageView.h"
+#include "PipelineRunner.h"
+
+#include <QWidget>
+
+#include <array>
+
+class QGridLayout;
+
+namespace omnitune {
+
+class PipelineView : public QWidget {
+    Q_OBJECT
+public:
+    static constexpr int kPaneCount = 5;
+    enum Pane { Acquired, Segmented, Grayscale, Edges, Hough };
+
+    explicit PipelineView(QWidget* parent = nullptr);
+
+    void showRun(const PipelineRun& run, std::shared_ptr<const OverlayData> overlay);
+    ImageView* pane(int index) const { return panes_[std::size_t(index)]; }
+    ViewTransform* transform() { return &transform_; }
+    OverlayOptions& overlays() { return overlays_; }
+    void toggleEnlarged(int index);
+    int enlarged() const { return enlarged_; }
+
+signals:
+    void hovered(QPointF imagePos);
+    void left();
+
+private:
+    void relayout();
+
+    ViewTransform transform_;
+    OverlayOptions overlays_;
+    std::array<ImageView*, kPaneCount> panes_{};
+    QGridLayout* grid_;
+    int enlarged_ = -1;
+};
+
+}  // namespace omnitune
