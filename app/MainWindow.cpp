@@ -52,10 +52,18 @@ MainWindow::MainWindow(QWidget* parent)
     table->setSelectionBehavior(QAbstractItemView::SelectRows);
     table->verticalHeader()->hide();
     table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    auto* tableDock = new QDockWidget(tr("Candidates (thesis Table 4.1)"), this);
-    tableDock->setObjectName("candidates");
-    tableDock->setWidget(table);
-    addDockWidget(Qt::RightDockWidgetArea, tableDock);
+    // The verdict first, then the scores that explain it.
+    table->horizontalHeader()->moveSection(CandidateTableModel::ResultColumn, 1);
+    QFont tableFont = table->font();
+    tableFont.setPointSizeF(tableFont.pointSizeF() * 0.9);
+    table->setFont(tableFont);
+    table->verticalHeader()->setDefaultSectionSize(table->fontMetrics().height() + 6);
+    table->setToolTip(tr("Candidates of this frame (thesis Table 4.1): click one to centre the panes on it"));
+    // The cell is narrow: keep the area, radius, the three scores and the verdict in view.
+    for (int column : {CandidateTableModel::SourceColumn, CandidateTableModel::XColumn, CandidateTableModel::YColumn,
+                       CandidateTableModel::DistanceColumn, CandidateTableModel::AccumulatorColumn})
+        table->hideColumn(column);
+    view_->setSideWidget(table);
     connect(table, &QTableView::clicked, this, [this](const QModelIndex& index) {
         const BallCandidate& c = candidates_->candidate(index.row());
         view_->transform()->centerOn(QPointF(c.x, c.y));

@@ -19,7 +19,9 @@ SourceOpen<VideoSource> VideoSource::open(const std::string& path)
     v->path_ = path;
     // Only the backends that decode files: CAP_ANY would also try V4L2, image sequences and
     // gphoto2 (which scans USB) on any path it is given.
-    for (const cv::VideoCaptureAPIs api : {cv::CAP_FFMPEG, cv::CAP_GSTREAMER, cv::CAP_OPENCV_MJPEG}) {
+    // Not GStreamer: it adds no file format FFmpeg lacks, and prints GLib criticals on stderr
+    // that would break the tools' one-line errors.
+    for (const cv::VideoCaptureAPIs api : {cv::CAP_FFMPEG, cv::CAP_OPENCV_MJPEG}) {
         if (!cv::videoio_registry::hasBackend(api)) continue;
         try {
             if (v->capture_.open(path, api)) break;
@@ -28,7 +30,7 @@ SourceOpen<VideoSource> VideoSource::open(const std::string& path)
         v->capture_.release();
     }
     if (!v->capture_.isOpened()) {
-        out.error = path + ": cannot be opened as a video (neither FFmpeg, GStreamer nor OpenCV's MJPEG reader can read it)";
+        out.error = path + ": cannot be opened as a video (neither FFmpeg nor OpenCV's MJPEG reader can read it)";
         return out;
     }
     const double count = v->capture_.get(cv::CAP_PROP_FRAME_COUNT);

@@ -1,5 +1,5 @@
 #pragma once
-// A video file through cv::VideoCapture (FFmpeg, GStreamer or OpenCV's own MJPEG reader).
+// A video file through cv::VideoCapture (FFmpeg or OpenCV's own MJPEG reader).
 // Seeking sets CAP_PROP_POS_FRAMES, which some codecs honour only approximately (streams
 // with B-frames or a variable frame rate can land a frame or two off), so reading the next
 // frame in order never seeks: playing forward is always exact. For frame-accurate work on

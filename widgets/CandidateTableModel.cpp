@@ -166,12 +166,12 @@ QVariant CandidateTableModel::headerData(int section, Qt::Orientation orientatio
     case SourceColumn: return tr("Source");
     case XColumn: return tr("x");
     case YColumn: return tr("y");
-    case RadiusColumn: return tr("Radius (px)");
+    case RadiusColumn: return tr("r (px)");
     case DistanceColumn: return tr("Distance (px)");
     case AccumulatorColumn: return tr("Accumulator");
-    case NonGreenColumn: return tr("Non-green %");
-    case NonBlackColumn: return tr("Non-black %");
-    case CircularityColumn: return tr("Circularity %");
+    case NonGreenColumn: return tr("non-green");
+    case NonBlackColumn: return tr("non-black");
+    case CircularityColumn: return tr("circ. %");
     case ResultColumn: return tr("Result");
     }
     return {};

@@ -24,16 +24,29 @@ PipelineView::PipelineView(QWidget* parent) : QWidget(parent), grid_(new QGridLa
 void PipelineView::relayout()
 {
     for (ImageView* v : panes_) grid_->removeWidget(v);
+    if (side_) grid_->removeWidget(side_);
     if (enlarged_ >= 0) {
         for (int i = 0; i < kPaneCount; ++i) panes_[std::size_t(i)]->setVisible(i == enlarged_);
+        if (side_) side_->hide();
         grid_->addWidget(panes_[std::size_t(enlarged_)], 0, 0);
         return;
+    }
+    if (side_) {
+        side_->show();
+        grid_->addWidget(side_, 1, 2);
     }
     // Three on top, two below: fits a 1366x768 laptop beside the tuning panel at 4:3.
     for (int i = 0; i < kPaneCount; ++i) {
         panes_[std::size_t(i)]->setVisible(true);
         grid_->addWidget(panes_[std::size_t(i)], i / 3, i % 3);
     }
+}
+
+void PipelineView::setSideWidget(QWidget* widget)
+{
+    side_ = widget;
+    side_->setParent(this);
+    relayout();
 }
 
 void PipelineView::toggleEnlarged(int index)

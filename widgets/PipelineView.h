@@ -25,6 +25,8 @@ public:
     ViewTransform* transform() { return &transform_; }
     OverlayOptions& overlays() { return overlays_; }
     void toggleEnlarged(int index);
+    // A widget for the grid's sixth cell, beside the two lower panes (the candidate table).
+    void setSideWidget(QWidget* widget);
     int enlarged() const { return enlarged_; }
 
 signals:
@@ -38,6 +40,7 @@ private:
     OverlayOptions overlays_;
     std::array<ImageView*, kPaneCount> panes_{};
     QGridLayout* grid_;
+    QWidget* side_ = nullptr;
     int enlarged_ = -1;
 };
 
