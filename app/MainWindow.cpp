@@ -81,7 +81,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(&doc_, &ConfigDocument::dirtyChanged, this, &MainWindow::updateTitle);
     connect(&doc_, &ConfigDocument::pathChanged, this, &MainWindow::updateTitle);
     connect(view_, &PipelineView::hovered, this, [this](QPointF p) {
-        pixelLabel_->setText(lastRun_ ? describePixel(*lastRun_, doc_.config(), p) : QString());
+        pixelLabel_->setText(lastRun_ ? describePixel(*lastRun_, lastRun_->config, p) : QString());
     });
     connect(view_, &PipelineView::left, pixelLabel_, &QLabel::clear);
     connect(panel_, &ThresholdPanel::editRefused, this, [this](const QString& why) { statusBar()->showMessage(why, 8000); });
@@ -166,7 +166,7 @@ bool MainWindow::openSource(const QString& path)
     }
     // A session brings its own config: use it unless that would throw away unsaved edits.
     const auto sessionConfig = std::filesystem::path(path.toStdString()) / kSessionConfigFile;
-    if (std::filesystem::is_regular_file(sessionConfig) && (doc_.path().isEmpty() || maybeSave()))
+    if (std::filesystem::is_regular_file(sessionConfig) && maybeSave())
         openConfig(QString::fromStdString(sessionConfig.string()));
     source_ = std::move(opened.source);
     sourceName_ = QFileInfo(path).fileName();
@@ -218,7 +218,7 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
         return;
     }
     auto overlay = std::make_shared<OverlayData>();
-    overlay->config = doc_.config();
+    overlay->config = run->config;
     overlay->candidates = run->result.candidates;
     overlay->detection = run->result.detection;
     view_->showRun(*run, overlay);

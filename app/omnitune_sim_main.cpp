@@ -32,6 +32,8 @@ const std::vector<OptionSpec> kOptions = {
     {"light", true, false, "F     light level factor (default 1)"},
     {"gradient", true, false, "F     light gradient / vignetting, 0..1 (default 0)"},
     {"noise", true, false, "F     sensor noise sigma, grey levels (default 2)"},
+    {"motion-blur", true, false, "PX    blur the ball along its image direction by this length (default 0)"},
+    {"occlusion", true, false, "F     share of the ball hidden behind a robot edge, 0..0.9 (default 0)"},
     {"compression", true, false, "N     PNG zlib level 0..9 (default 1: fast; 9: smallest, for bundled sessions)"},
     {"overwrite", false, false, "      replace an existing session in --out"},
     {"help", false, false, "      this text"},
@@ -88,6 +90,8 @@ int main(int argc, char** argv)
         }
     };
     int seed = int(tour.seed);
+    double motionBlur = 0.0;
+    double occlusion = 0.0;
     try {
         integer("frames", 1, 100000, tour.frames);
         integer("seed", 0, 2147483647, seed);
@@ -96,6 +100,8 @@ int main(int argc, char** argv)
         number("light", 0.05, 5, tour.lightLevel);
         number("gradient", 0, 1, tour.lightGradient);
         number("noise", 0, 100, tour.noiseSigma);
+        number("motion-blur", 0, 50, motionBlur);
+        number("occlusion", 0, 0.9, occlusion);
     } catch (const std::invalid_argument& e) {
         return fail(e.what());
     }
@@ -124,7 +130,9 @@ int main(int argc, char** argv)
         info.notes = "omnitune-sim: ball " + std::string(ballKindName(tour.ball)) + (cl.has("no-ball") ? " (left out)" : "") +
                      ", " + std::to_string(tour.frames) + " frames, seed " + std::to_string(tour.seed) +
                      (tour.shadow ? ", head shadow" : "") + (tour.feet ? ", feet" : "") +
-                     (tour.obstacles ? "" : ", no obstacles");
+                     (tour.obstacles ? "" : ", no obstacles") +
+                     (motionBlur > 0 ? ", motion blur " + std::to_string(motionBlur) + " px" : "") +
+                     (occlusion > 0 ? ", occlusion " + std::to_string(occlusion) : "");
         const std::string out = *cl.value("out");
         if (!cl.has("overwrite") && std::filesystem::exists(std::filesystem::path(out) / kSessionInfoFile))
             return fail(out + " already holds a session: choose another folder or pass --overwrite");
@@ -143,6 +151,8 @@ int main(int argc, char** argv)
         for (std::size_t i = 0; i < scenes.size(); ++i) {
             SceneOptions& scene = scenes[i];
             scene.ballPresent = !cl.has("no-ball");
+            scene.motionBlurPx = motionBlur;
+            scene.occlusion = occlusion;
             GroundTruth truth;
             const cv::Mat image = sim.render(scene, &truth);
             TruthRow row;

@@ -25,16 +25,15 @@ const BallCandidate* decisiveCandidate(const PipelineResult& r)
     return best;
 }
 
-// Quotes a field for CSV when it holds a comma, a quote or a newline.
+}  // namespace
+
 std::string csvField(const std::string& s)
 {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
     std::string out = "\"";
-    for (char ch : s) out += ch == '"' ? std::string("\"\"") : std::string(1, ch == '\n' ? ' ' : ch);
+    for (char ch : s) out += ch == '"' ? std::string("\"\"") : std::string(1, ch == '\n' || ch == '\r' ? ' ' : ch);
     return out + "\"";
 }
-
-}  // namespace
 
 std::string detectionCsvHeader()
 {

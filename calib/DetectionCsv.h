@@ -12,4 +12,7 @@ namespace omnitune {
 std::string detectionCsvHeader();
 std::string detectionCsvRow(int frame, const PipelineResult& result);
 
+// A CSV field, quoted when it holds a comma, a quote or a line break.
+std::string csvField(const std::string& text);
+
 }  // namespace omnitune

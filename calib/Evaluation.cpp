@@ -1,5 +1,6 @@
 #include "Evaluation.h"
 
+#include "DetectionCsv.h"
 #include "RobotPose.h"
 
 #include <algorithm>
@@ -49,7 +50,13 @@ EvaluationRow evaluate(const std::vector<FrameOutcome>& outcomes, const std::map
     double timeSum = 0;
     row.timeMinMs = std::numeric_limits<double>::infinity();
     for (const FrameOutcome& o : outcomes) {
-        if (!o.processed) continue;
+        if (!o.processed) {
+            ++row.failed;
+            // An unreadable frame with the ball is a miss, not a frame left out of the ratio.
+            const auto t = truth.find(o.frame);
+            if (t != truth.end() && t->second.ballVisible) ++row.withBall;
+            continue;
+        }
         ++row.frames;
         timeSum += o.timeMs;
         row.timeMinMs = std::min(row.timeMinMs, o.timeMs);
@@ -89,6 +96,7 @@ EvaluationRow evaluate(const std::vector<FrameOutcome>& outcomes, const std::map
     row.falsePositivePct = row.annotated ? 100.0 * row.falsePositives / row.annotated : 0;
     row.meanErrorM = errorCount ? errorSum / errorCount : 0;
     row.hasFieldPositions = allPoses && real.n > 0;
+    row.hasDetections = detected.n > 0;
     if (row.hasFieldPositions) {
         row.realX = real.meanX();
         row.realY = real.meanY();
@@ -109,8 +117,9 @@ std::string evaluationMarkdown(const std::vector<EvaluationRow>& rows)
     char buf[512];
     for (const EvaluationRow& r : rows) {
         const std::string real = r.hasFieldPositions ? fmt("(%.2f, %.2f)", r.realX, r.realY) : "n/a";
-        const std::string mean = r.hasFieldPositions ? fmt("(%.2f, %.2f)", r.meanX, r.meanY) : "n/a";
-        const std::string sd = r.hasFieldPositions ? fmt("(%.2f, %.2f)", r.stdX, r.stdY) : "n/a";
+        const bool positions = r.hasFieldPositions && r.hasDetections;
+        const std::string mean = positions ? fmt("(%.2f, %.2f)", r.meanX, r.meanY) : "n/a";
+        const std::string sd = positions ? fmt("(%.2f, %.2f)", r.stdX, r.stdY) : "n/a";
         std::snprintf(buf, sizeof buf, "| %s | %s | %s | %s | %s | %.1f | %.1f | %.3f / %.3f | %.1f / %.1f / %.1f | %d (%d) |\n",
                       r.session.c_str(), r.algorithm.c_str(), real.c_str(), mean.c_str(), sd.c_str(),
                       r.detectionRatioPct, r.falsePositivePct, r.meanErrorM, r.maxErrorM, r.timeMinMs, r.timeAvgMs,
@@ -129,7 +138,7 @@ std::string evaluationCsv(const std::vector<EvaluationRow>& rows)
     for (const EvaluationRow& r : rows) {
         std::snprintf(buf, sizeof buf,
                       "%s,%s,%d,%d,%d,%d,%d,%.2f,%.2f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.3f\n",
-                      r.session.c_str(), r.algorithm.c_str(), r.frames, r.annotated, r.withBall, r.correct,
+                      csvField(r.session).c_str(), r.algorithm.c_str(), r.frames, r.annotated, r.withBall, r.correct,
                       r.falsePositives, r.detectionRatioPct, r.falsePositivePct, r.realX, r.realY, r.meanX, r.meanY,
                       r.stdX, r.stdY, r.meanErrorM, r.maxErrorM, r.timeMinMs, r.timeAvgMs, r.timeMaxMs);
         csv += buf;

@@ -26,6 +26,7 @@ struct EvaluationRow {
     std::string session;
     std::string algorithm;
     int frames = 0;          // frames processed
+    int failed = 0;          // frames that could not be read or processed (count as misses)
     int annotated = 0;       // processed frames with a truth row
     int withBall = 0;        // annotated frames where the ball is visible
     int correct = 0;         // ball frames with a detection within maxErrorM of the truth
@@ -34,7 +35,8 @@ struct EvaluationRow {
     double falsePositivePct = 0.0;   // falsePositives / annotated
     // Field-frame positions (m), when the truth carries the robot pose: the ball's real
     // position and the mean and std of every detection in ball frames (thesis Tables 5.1-5.3).
-    bool hasFieldPositions = false;
+    bool hasFieldPositions = false;  // real position known (the truth has robot poses)
+    bool hasDetections = false;      // at least one detection in a ball frame (mean/std valid)
     double realX = 0, realY = 0, meanX = 0, meanY = 0, stdX = 0, stdY = 0;
     double meanErrorM = 0.0;  // over ball frames with a detection (robot frame, outliers included)
     double maxErrorM = 0.0;

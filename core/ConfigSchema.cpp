@@ -206,6 +206,9 @@ std::vector<ConfigKey> buildSchema()
     s.push_back(boolKey("validation.border_into_carpet", false,
                         "A ray counts only if carpet (or an unprocessed pixel) lies 1.5 px beyond its edge; rejects line corners",
                         [](auto& c) -> auto& { return c.validation.borderIntoCarpet; }));
+    s.push_back(boolKey("validation.ignore_occluded_rays", false,
+                        "Rays whose border leads into black (a robot hiding part of the ball) are not judged; 0: they count as misses",
+                        [](auto& c) -> auto& { return c.validation.ignoreOccludedRays; }));
 
     // algorithm
     ConfigKey alg{"algorithm.method", ValueType::Choice, "", 0, 0,

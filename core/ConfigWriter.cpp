@@ -99,8 +99,11 @@ std::optional<std::string> writeFileAtomically(const std::string& path, const st
         }
         done += std::size_t(n);
     }
-    if (::fsync(fd) != 0 || ::close(fd) != 0) {
-        const std::string why = errnoText();
+    const bool synced = ::fsync(fd) == 0;
+    const std::string syncError = synced ? std::string() : errnoText();
+    const bool closed = ::close(fd) == 0;  // always closed, whether the flush worked or not
+    if (!synced || !closed) {
+        const std::string why = synced ? errnoText() : syncError;
         ::unlink(tmp.c_str());
         return "cannot flush " + tmp + ": " + why;
     }

@@ -40,7 +40,8 @@ double DistanceMap::toGround(double px) const
 {
     const auto& x = options_.pixelRadii;
     const auto& y = options_.groundDistances;
-    if (px <= x.front()) return y.front() + (px - x.front()) * slopes_.front();
+    // Before the first point: straight down towards (0 px, 0 m), never a negative distance.
+    if (px <= x.front()) return x.front() > 0 ? y.front() * std::max(px, 0.0) / x.front() : y.front();
     if (px >= x.back()) return y.back() + (px - x.back()) * slopes_.back();
     const std::size_t i = std::size_t(std::upper_bound(x.begin(), x.end(), px) - x.begin()) - 1;
     const double h = x[i + 1] - x[i];
@@ -55,7 +56,7 @@ double DistanceMap::toPixels(double metres) const
 {
     const auto& x = options_.pixelRadii;
     const auto& y = options_.groundDistances;
-    if (metres <= y.front()) return x.front() + (metres - y.front()) / slopes_.front();
+    if (metres <= y.front()) return y.front() > 0 ? x.front() * std::max(metres, 0.0) / y.front() : x.front();
     if (metres >= y.back()) return x.back() + (metres - y.back()) / slopes_.back();
     double lo = x.front();
     double hi = x.back();

@@ -112,6 +112,11 @@ void Pipeline::process(const cv::Mat& frame, PixelFormat format, PipelineResult&
                   (format == PixelFormat::Bgr8 ? "3" : "2") + " 8-bit channels";
         return;
     }
+    if (format == PixelFormat::Uyvy && frame.cols % 2 != 0) {
+        r.error = "a UYVY frame needs an even width (pixel pairs share U and V); this one is " +
+                  std::to_string(frame.cols) + " px wide";
+        return;
+    }
     if (frame.size() != size) {
         r.error = "the frame is " + std::to_string(frame.cols) + "x" + std::to_string(frame.rows) +
                   " but the config's geometry is for " + std::to_string(size.width) + "x" + std::to_string(size.height) +

@@ -53,8 +53,9 @@ SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry
                 if (!options.multipleMaxima) {
                     area = 0;
                 } else {
+                    // Beyond the last bound (a larger mirror than the areas cover): the last area.
                     const auto it = std::lower_bound(b.begin(), b.end(), d);
-                    if (it != b.end()) area = std::uint8_t(it - b.begin());
+                    area = std::uint8_t(std::min<std::size_t>(std::size_t(it - b.begin()), b.size() - 1));
                 }
             }
             areaIndex_.at<std::uint8_t>(y, x) = area;
@@ -149,7 +150,8 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
         c.source = CandidateSource::SpecificHough;
         c.distancePx = geometry_->distanceAt(c.x, c.y);
         const auto& b = options_.areaBounds;
-        c.area = int(std::lower_bound(b.begin(), b.end(), c.distancePx) - b.begin());
+        c.area = int(std::min<std::size_t>(std::size_t(std::lower_bound(b.begin(), b.end(), c.distancePx) - b.begin()),
+                                           b.size() - 1));
         c.expectedRadiusPx = ball_->radiusAt(c.distancePx);
         c.radiusPx = c.expectedRadiusPx;
         candidates.push_back(c);

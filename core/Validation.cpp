@@ -69,7 +69,8 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
         int lastY = INT_MIN;
         // From the centre when only the first edge counts, else from the band's inner side.
         const double rStart = options.firstEdgeOnly ? 0.5 : rMin;
-        bool blocked = false;  // an edge inside the band came first
+        bool blocked = false;   // an edge inside the band came first
+        bool occluded = false;  // the border leads into a robot: not judged
         for (double r = rStart; r <= rMax + 1e-9 && !hit && !blocked; r += 0.5) {
             const int px = int(std::lround(x + r * ca));
             const int py = int(std::lround(y + r * sa));
@@ -83,15 +84,20 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
             lastX = px;
             lastY = py;
             if (!edge) continue;
-            if (r < rMin - 1e-9) {
+            // What lies 1.5 px beyond the edge: carpet for a ball's border, a robot (black)
+            // when the ball is partly hidden behind one: such a ray says nothing of the shape.
+            const int bx = int(std::lround(x + (r + 1.5) * ca));
+            const int by = int(std::lround(y + (r + 1.5) * sa));
+            const bool beyondKnown = bx >= 0 && by >= 0 && bx < w && by < h && geometry.isUsed(bx, by);
+            const auto beyond = beyondKnown ? ColorClass(classes.ptr<std::uint8_t>(by)[bx]) : ColorClass::Unknown;
+            if (options.ignoreOccludedRays && beyond == ColorClass::Black) {
+                occluded = true;
+                break;
+            }
+            if (r < rMin - 1e-9)
                 blocked = true;
-                continue;
-            } else if (options.borderIntoCarpet) {
-                // Carpet 1.5 px beyond the edge (unprocessed or outside: unknown, accepted).
-                const int bx = int(std::lround(x + (r + 1.5) * ca));
-                const int by = int(std::lround(y + (r + 1.5) * sa));
-                hit = bx < 0 || by < 0 || bx >= w || by >= h || !geometry.isUsed(bx, by) ||
-                      classes.ptr<std::uint8_t>(by)[bx] == std::uint8_t(ColorClass::Green);
+            else if (options.borderIntoCarpet) {
+                hit = !beyondKnown || beyond == ColorClass::Green;
                 blocked = !hit;
             } else {
                 hit = true;
@@ -101,6 +107,14 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
                 hitSq += r * r;
             }
         }
+        if (!hit && !blocked && !occluded && options.ignoreOccludedRays) {
+            // No border at all: the ball may run on into a robot standing against it.
+            const int ex = int(std::lround(x + rMax * ca));
+            const int ey = int(std::lround(y + rMax * sa));
+            occluded = ex >= 0 && ey >= 0 && ex < w && ey < h && geometry.isUsed(ex, ey) &&
+                       classes.ptr<std::uint8_t>(ey)[ex] == std::uint8_t(ColorClass::Black);
+        }
+        if (occluded) continue;
         usable += anyUsed;
         hits += hit;
     }

@@ -40,6 +40,19 @@ private slots:
         QVERIFY(std::abs(map.toGround(350) - 3.5) < 1e-9);  // extrapolated
     }
 
+    // A map whose first point is not at 0 px goes straight to 0 m at the centre, never below.
+    void neverNegativeBeforeTheFirstPoint()
+    {
+        DistanceMapOptions o;
+        o.pixelRadii = {50, 70, 240};
+        o.groundDistances = {0.30, 0.45, 6.5};
+        const DistanceMap map(o);
+        QCOMPARE(map.toGround(0), 0.0);
+        QVERIFY(std::abs(map.toGround(25) - 0.15) < 1e-9);
+        QVERIFY(map.toGround(-5) >= 0.0);
+        QVERIFY(std::abs(map.toPixels(0.15) - 25) < 1e-9);  // and back
+    }
+
     void ballHeightCorrection()
     {
         DistanceMapOptions o;

@@ -129,6 +129,18 @@ private slots:
         QVERIFY(!r.detection.found);
     }
 
+    void oddWidthUyvyIsAClearError()
+    {
+        Config c;
+        c.geometry.imageWidth = 505;
+        c.geometry.centerX = 252;
+        Pipeline pipeline(c);
+        PipelineResult r;
+        pipeline.process(cv::Mat(480, 505, CV_8UC2, cv::Scalar(128, 100)), PixelFormat::Uyvy, r, true);
+        QVERIFY(!r.ok());
+        QVERIFY2(QString::fromStdString(r.error).contains("even width"), r.error.c_str());
+    }
+
     void invalidConfigIsRefused()
     {
         Config c;

@@ -57,15 +57,16 @@ private:
             run->frameIndex = r->frameIndex;
             run->frame = r->frame;
             run->format = r->format;
+            run->config = r->config;
             try {
                 if (!pipeline_ || generation_ != r->generation) {
+                    pipeline_.reset();  // a config that cannot be built leaves no stale pipeline
                     pipeline_ = std::make_unique<Pipeline>(r->config);
                     generation_ = r->generation;
                 }
                 pipeline_->process(r->frame, r->format, run->result, true);
             } catch (const std::exception& e) {
-                pipeline_.reset();
-                run->error = QString::fromStdString(e.what());
+                run->error = QString::fromStdString(e.what());  // the pipeline itself stays usable
             }
             emit finished(run);
         }

@@ -17,6 +17,7 @@ struct PipelineRun {
     int frameIndex = -1;
     cv::Mat frame;            // the frame that was processed (BGR or UYVY)
     PixelFormat format = PixelFormat::Bgr8;
+    Config config;            // the config this run used (overlays and the inspector use it)
     PipelineResult result;    // with the five stage images
     QString error;            // the config could not be used (result then empty)
 };

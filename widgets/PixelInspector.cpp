@@ -25,7 +25,8 @@ QString describePixel(const PipelineRun& run, const Config& config, QPointF imag
     const auto& g = config.geometry;
     const double d = std::hypot(x - g.centerX, y - g.centerY);
     const bool inRing = d >= g.innerRadius && d <= g.outerRadius;
-    const bool masked = !config.mask.empty() && config.mask.at<std::uint8_t>(y, x) == 0;
+    const bool masked = !config.mask.empty() && x < config.mask.cols && y < config.mask.rows &&
+                        config.mask.at<std::uint8_t>(y, x) == 0;
     QString metres = QStringLiteral("-");
     try {
         metres = QString::number(DistanceMap(config.distanceMap).toGround(d), 'f', 2);
