@@ -1,7 +1,7 @@
 // omnitune-sim: renders a robot tour around a static ball (thesis Fig. 5.1) as a session
 // folder with truth.csv and the config it was rendered with.
 #include "CommandLine.h"
-#include "ConfigParser.h"
+#include "ToolConfig.h"
 #include "SceneSimulator.h"
 #include "SessionWriter.h"
 #include "StderrProgress.h"
@@ -111,11 +111,11 @@ int main(int argc, char** argv)
     tour.obstacles = !cl.has("no-obstacles");
 
     Config config;
-    if (auto path = cl.value("config")) {
-        const ConfigLoad load = loadConfig(*path);
-        for (const auto& w : load.warnings) std::cerr << "warning: " << w.toString() << "\n";
-        if (!load.ok()) return fail(load.error->toString());
-        config = load.config;
+    if (cl.has("config")) {
+        std::string error;
+        const auto loaded = loadToolConfig(cl.value("config"), {}, std::nullopt, error);
+        if (!loaded) return fail(error);
+        config = *loaded;
     }
 
     try {

@@ -25,14 +25,6 @@ std::string typeOf(const cv::FileNode& n)
     return "nothing";
 }
 
-std::vector<std::string> splitPath(const std::string& path)
-{
-    std::vector<std::string> parts;
-    std::stringstream ss(path);
-    for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
-    return parts;
-}
-
 // Reads one key's node into a value, or explains why it cannot.
 std::optional<ConfigValue> readValue(const ConfigKey& k, const cv::FileNode& n, std::string& why)
 {
@@ -134,7 +126,7 @@ ConfigLoad parseConfig(const std::string& text, const std::string& fileName)
 
     for (const ConfigKey& k : configSchema()) {
         cv::FileNode n = root;
-        for (const std::string& part : splitPath(k.path)) {
+        for (const std::string& part : splitConfigPath(k.path)) {
             if (!n.isMap()) {
                 n = cv::FileNode();
                 break;

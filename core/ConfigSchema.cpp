@@ -262,6 +262,16 @@ const std::vector<ConfigKey>& configSchema()
     return schema;
 }
 
+std::vector<std::string> splitConfigPath(const std::string& path)
+{
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    for (std::size_t dot; (dot = path.find('.', start)) != std::string::npos; start = dot + 1)
+        parts.push_back(path.substr(start, dot - start));
+    parts.push_back(path.substr(start));
+    return parts;
+}
+
 const ConfigKey* findConfigKey(std::string_view path)
 {
     for (const ConfigKey& k : configSchema())

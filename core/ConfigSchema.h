@@ -34,6 +34,8 @@ struct ConfigKey {
 };
 
 const std::vector<ConfigKey>& configSchema();
+// "colors.green.h_min" -> {"colors", "green", "h_min"}: the sections a key is nested in.
+std::vector<std::string> splitConfigPath(const std::string& path);
 const ConfigKey* findConfigKey(std::string_view path);
 
 // Value as written in docs and messages ("60", "0.15", "[70, 105]", "combined").

@@ -15,16 +15,6 @@ namespace omnitune {
 
 namespace {
 
-std::vector<std::string> splitPath(const std::string& path)
-{
-    std::vector<std::string> parts;
-    std::size_t start = 0;
-    for (std::size_t dot; (dot = path.find('.', start)) != std::string::npos; start = dot + 1)
-        parts.push_back(path.substr(start, dot - start));
-    parts.push_back(path.substr(start));
-    return parts;
-}
-
 std::string comment(const ConfigKey& k)
 {
     std::string c = " " + k.meaning;
@@ -50,7 +40,7 @@ std::string serializeConfig(const Config& config)
     fs << "saved_by" << "OmniTune 0.1";
     std::vector<std::string> open;  // sections currently open
     for (const ConfigKey& k : configSchema()) {
-        auto parts = splitPath(k.path);
+        auto parts = splitConfigPath(k.path);
         const std::string leaf = parts.back();
         parts.pop_back();
         std::size_t common = 0;

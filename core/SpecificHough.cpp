@@ -50,13 +50,7 @@ SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry
                 used ? std::uint8_t(d < options.nearRobotRadius ? options.nearRobotWeight : 1) : 0;
             std::uint8_t area = 255;
             if (used) {
-                if (!options.multipleMaxima) {
-                    area = 0;
-                } else {
-                    // Beyond the last bound (a larger mirror than the areas cover): the last area.
-                    const auto it = std::lower_bound(b.begin(), b.end(), d);
-                    area = std::uint8_t(std::min<std::size_t>(std::size_t(it - b.begin()), b.size() - 1));
-                }
+                area = std::uint8_t(options.multipleMaxima ? areaOf(d) : 0);
             }
             areaIndex_.at<std::uint8_t>(y, x) = area;
         }
@@ -65,6 +59,13 @@ SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry
     sums_ = cv::Mat::zeros(size, CV_32SC1);
     rowSums_.assign(std::size_t(size.width) * 3, 0);
     best_.resize(options.multipleMaxima ? b.size() : 1);
+}
+
+int SpecificHough::areaOf(double distance) const
+{
+    const auto& b = options_.areaBounds;
+    const auto it = std::lower_bound(b.begin(), b.end(), distance);
+    return int(std::min<std::size_t>(std::size_t(it - b.begin()), b.size() - 1));
 }
 
 void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::vector<BallCandidate>& candidates)
@@ -149,9 +150,7 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
         if (c.accumulator < options_.minAccumulator || c.accumulator <= 0) continue;
         c.source = CandidateSource::SpecificHough;
         c.distancePx = geometry_->distanceAt(c.x, c.y);
-        const auto& b = options_.areaBounds;
-        c.area = int(std::min<std::size_t>(std::size_t(std::lower_bound(b.begin(), b.end(), c.distancePx) - b.begin()),
-                                           b.size() - 1));
+        c.area = areaOf(c.distancePx);
         c.expectedRadiusPx = ball_->radiusAt(c.distancePx);
         c.radiusPx = c.expectedRadiusPx;
         candidates.push_back(c);

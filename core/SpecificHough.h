@@ -49,6 +49,10 @@ public:
     int areaCount() const { return int(options_.areaBounds.size()); }
 
 private:
+    // Radial area (index into areaBounds) of a centre `distance` px from the robot; beyond the
+    // last bound (a larger mirror than the areas cover) it is the last area.
+    int areaOf(double distance) const;
+
     // A vote position relative to an edge pixel: `along` the ray from the robot centre through
     // the pixel and `across` it, px.
     struct LocusPoint { float along; float across; };

@@ -246,6 +246,14 @@ void ThresholdPanel::addEditor(const ConfigKey& k, QFormLayout* form)
     auto trackTyping = [this, key](QLineEdit* line) {
         if (line) connect(line, &QLineEdit::textEdited, this, [this, key] { typing_.insert(key); });
     };
+    // A spin box: typing starts the guard, finishing the edit ends it and shows the document.
+    auto watchSpinTyping = [this, key, trackTyping](QAbstractSpinBox* spin) {
+        connect(spin, &QAbstractSpinBox::editingFinished, this, [this, key] {
+            typing_.remove(key);
+            syncEditor(key);
+        });
+        trackTyping(spin->findChild<QLineEdit*>());
+    };
     switch (k.type) {
     case ValueType::Int: {
         auto* spin = new QSpinBox;
@@ -253,11 +261,7 @@ void ThresholdPanel::addEditor(const ConfigKey& k, QFormLayout* form)
         spin->setKeyboardTracking(false);
         spin->setAccelerated(true);
         connect(spin, qOverload<int>(&QSpinBox::valueChanged), this, [this, key](int v) { apply(key, v); });
-        connect(spin, &QAbstractSpinBox::editingFinished, this, [this, key] {
-            typing_.remove(key);
-            syncEditor(key);
-        });
-        trackTyping(spin->findChild<QLineEdit*>());
+        watchSpinTyping(spin);
         editor = spin;
         break;
     }
@@ -275,11 +279,7 @@ void ThresholdPanel::addEditor(const ConfigKey& k, QFormLayout* form)
             if (QString::number(current, 'f', spin->decimals()) == QString::number(v, 'f', spin->decimals())) return;
             apply(key, v);
         });
-        connect(spin, &QAbstractSpinBox::editingFinished, this, [this, key] {
-            typing_.remove(key);
-            syncEditor(key);
-        });
-        trackTyping(spin->findChild<QLineEdit*>());
+        watchSpinTyping(spin);
         editor = spin;
         break;
     }
