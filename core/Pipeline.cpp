@@ -1,5 +1,6 @@
 #include "Pipeline.h"
 
+#include "BallPosition.h"
 #include "ConfigSchema.h"
 #include "FillBytes.h"
 
@@ -160,11 +161,11 @@ void Pipeline::process(const cv::Mat& frame, PixelFormat format, PipelineResult&
         d.px = c.x;
         d.py = c.y;
         d.radiusPx = c.radiusPx;
-        d.distancePx = c.distancePx;
-        d.distanceM = p.distanceMap.ballDistance(c.distancePx);
-        const double angle = std::atan2(-(c.y - p.config.geometry.centerY), c.x - p.config.geometry.centerX);
-        d.xM = d.distanceM * std::cos(angle);
-        d.yM = d.distanceM * std::sin(angle);
+        const BallPosition at = ballPositionAt(c.x, c.y, p.config.geometry.centerX, p.config.geometry.centerY, p.distanceMap);
+        d.distancePx = at.distancePx;
+        d.distanceM = at.distanceM;
+        d.xM = at.xM;
+        d.yM = at.yM;
     }
     r.timings.totalMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 
