@@ -3,32 +3,39 @@
 #include "CandidateTableModel.h"
 #include "FrameNavigator.h"
 #include "FrameSourceFactory.h"
+#include "MarkedSlider.h"
 #include "PipelineView.h"
 #include "PixelInspector.h"
+#include "RecentFiles.h"
 #include "Session.h"
+#include "SessionSource.h"
+#include "SessionSweepDialog.h"
 #include "ThresholdPanel.h"
+#include "TruthMarker.h"
 
 #include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
+#include <QSet>
 #include <QStatusBar>
 #include <QTableView>
+#include <QTimer>
 #include <QVBoxLayout>
-
-#include <filesystem>
 
 namespace omnitune {
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), view_(new PipelineView(this)), nav_(new FrameNavigator(this)),
       panel_(new ThresholdPanel(&doc_, this)), candidates_(new CandidateTableModel(this)),
-      resultLabel_(new QLabel(this)), timingLabel_(new QLabel(this)), pixelLabel_(new QLabel(this))
+      marker_(new TruthMarker(&truth_, view_, this)), resultLabel_(new QLabel(this)), truthLabel_(new QLabel(this)), timingLabel_(new QLabel(this)), pixelLabel_(new QLabel(this))
 {
     auto* central = new QWidget(this);
     auto* layout = new QVBoxLayout(central);
@@ -37,7 +44,12 @@ MainWindow::MainWindow(QWidget* parent)
     resultLabel_->setObjectName("result");
     resultLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(view_, 1);
-    layout->addWidget(resultLabel_);
+    auto* resultRow = new QHBoxLayout;
+    resultRow->addWidget(resultLabel_, 1);
+    truthLabel_->setObjectName("truth");
+    truthLabel_->setStyleSheet("color: #c030c0");  // the truth overlay's colour
+    resultRow->addWidget(truthLabel_);
+    layout->addLayout(resultRow);
     layout->addWidget(nav_);
     setCentralWidget(central);
 
@@ -84,9 +96,24 @@ MainWindow::MainWindow(QWidget* parent)
         pixelLabel_->setText(lastRun_ ? describePixel(*lastRun_, lastRun_->config, p) : QString());
     });
     connect(view_, &PipelineView::left, pixelLabel_, &QLabel::clear);
+    connect(marker_, &TruthMarker::advanceRequested, nav_, &FrameNavigator::next);
+    connect(marker_, &TruthMarker::frameRequested, nav_, &FrameNavigator::goTo);
+    connect(marker_, &TruthMarker::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    connect(marker_, &TruthMarker::described, truthLabel_, &QLabel::setText);
+    connect(&truth_, &TruthDocument::changed, this, [this](int frame) {
+        if (frame >= 0) {
+            nav_->setMark(frame, FrameMarkKind::Truth, truth_.row(frame) != nullptr);
+            return;
+        }
+        QVector<FrameMark> marks;
+        for (const auto& entry : truth_.rows()) marks.push_back({entry.first, FrameMarkKind::Truth});
+        nav_->setMarks(marks, {FrameMarkKind::Truth});
+    });
     connect(panel_, &ThresholdPanel::editRefused, this, [this](const QString& why) { statusBar()->showMessage(why, 8000); });
 
+    setAcceptDrops(true);  // a session folder, video, image or config.yml dropped on the window opens
     buildMenus();
+    marker_->fillMenu(menuBar()->addMenu(tr("&Truth")));
     updateTitle();
     resize(1366, 768);
 }
@@ -96,8 +123,11 @@ MainWindow::~MainWindow() = default;
 void MainWindow::buildMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&Open session, video or images..."), this, &MainWindow::chooseSource, QKeySequence::Open);
+    file->addAction(tr("&Open session or image folder..."), this, &MainWindow::chooseSource, QKeySequence::Open);
+    file->addAction(tr("Open &video or image file..."), this, &MainWindow::chooseSourceFile);
     file->addAction(tr("Open &config..."), this, &MainWindow::chooseConfig);
+    recent_ = new RecentFiles(QStringLiteral("recentFiles"), file->addMenu(tr("Open &recent")), this);
+    connect(recent_, &RecentFiles::chosen, this, &MainWindow::openPath);
     file->addSeparator();
     file->addAction(tr("&Save config"), this, &MainWindow::saveConfig, QKeySequence::Save);
     file->addAction(tr("Save config &as..."), this, &MainWindow::saveConfigAs, QKeySequence::SaveAs);
@@ -126,7 +156,7 @@ void MainWindow::buildMenus()
     view->addSeparator();
     OverlayOptions& o = view_->overlays();
     const std::pair<QString, bool*> toggles[] = {
-        {tr("Robot centre and mask radii"), &o.geometry}, {tr("Radial areas"), &o.areas},
+        {tr("Robot centre, mask radii and mask outline"), &o.geometry}, {tr("Radial areas"), &o.areas},
         {tr("Radial sensors"), &o.sensors},               {tr("Candidates with scores"), &o.candidates},
         {tr("Accepted ball"), &o.ball},                    {tr("Expected ball under the cursor"), &o.cursorRadius}};
     for (const auto& [name, flag] : toggles) {
@@ -150,6 +180,13 @@ void MainWindow::buildMenus()
         QAction* a = play->addAction(names[i], nav_, keys[i].second);
         a->setShortcut(keys[i].first);
     }
+
+    QMenu* session = menuBar()->addMenu(tr("&Session"));
+    applyToSessionAction_ = session->addAction(tr("&Apply to whole session"), this, &MainWindow::applyToSession,
+                                               QKeySequence(Qt::CTRL + Qt::Key_R));
+    applyToSessionAction_->setObjectName("applyToSession");
+    applyToSessionAction_->setStatusTip(tr("Run the current and the saved config over every frame and mark what changed"));
+    applyToSessionAction_->setEnabled(false);  // until a source is open
 }
 
 bool MainWindow::openSource(const QString& path)
@@ -165,16 +202,36 @@ bool MainWindow::openSource(const QString& path)
         statusBar()->showMessage(w.join("; "), 10000);
     }
     // A session brings its own config: use it unless that would throw away unsaved edits.
-    const auto sessionConfig = std::filesystem::path(path.toStdString()) / kSessionConfigFile;
-    if (std::filesystem::is_regular_file(sessionConfig) && maybeSave())
-        openConfig(QString::fromStdString(sessionConfig.string()));
+    const auto* session = dynamic_cast<const SessionSource*>(opened.source.get());
+    if (session && session->reader().hasConfig() && maybeSave())
+        openConfig(QString::fromStdString(session->reader().configPath()));
+    const QString sessionFolder = session ? QString::fromStdString(session->reader().folder()) : QString();
     source_ = std::move(opened.source);
     sourceName_ = QFileInfo(path).fileName();
+    sourcePath_ = path;  // Apply to whole session re-opens it in a thread of its own
+    applyToSessionAction_->setEnabled(true);
+    if (sweepDialog_) sweepDialog_->reset();  // its results belong to the previous source
     nav_->setFrameCount(source_->frameCount());
     nav_->setFrameRate(doc_.config().camera.frameRate);
+    marker_->setFrameCount(source_->frameCount());
+    openTruth(sessionFolder);
+    recent_->add(path);
     updateTitle();
     showFrame(0);
     return true;
+}
+
+void MainWindow::openTruth(const QString& sessionFolder)
+{
+    if (sessionFolder.isEmpty()) {  // truth.csv belongs to a session folder (docs/sessions.md)
+        truth_.close(tr("this source is not a session folder; ground truth is kept in a session's truth.csv"));
+        return;
+    }
+    QStringList warnings;
+    if (const auto why = truth_.open(sessionFolder, &warnings))
+        statusBar()->showMessage(*why, 15000);
+    else if (!warnings.isEmpty())
+        statusBar()->showMessage(warnings.join("; "), 15000);
 }
 
 bool MainWindow::openConfig(const QString& path)
@@ -188,23 +245,48 @@ bool MainWindow::openConfig(const QString& path)
     return true;
 }
 
+bool MainWindow::openPath(const QString& path)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix == "yml" || suffix == "yaml") {
+        if (QFileInfo(path).fileName() == QString::fromUtf8(kSessionInfoFile.data(), int(kSessionInfoFile.size())))
+            return openSource(path);  // session.yml opens its session
+        if (!maybeSave() || !openConfig(path)) return false;
+        recent_->add(path);  // only configs opened by hand: a session's own comes with it
+        return true;
+    }
+    return openSource(path);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (urls.size() == 1 && urls.front().isLocalFile()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (urls.size() != 1 || !urls.front().isLocalFile()) return;
+    event->acceptProposedAction();
+    // Opening may ask about unsaved changes: not from inside the drop, which holds the
+    // dragging application waiting.
+    const QString path = urls.front().toLocalFile();
+    QTimer::singleShot(0, this, [this, path] { openPath(path); });
+}
+
 void MainWindow::showFrame(int index)
 {
     if (!source_) return;
-    const auto err = source_->read(index, frame_);
+    frameIndex_ = index;
     nav_->setCurrent(index);
-    if (err) {
-        haveFrame_ = false;
-        resultLabel_->setText(tr("Frame %1 skipped: %2").arg(index).arg(QString::fromStdString(err->toString())));
-        return;
-    }
-    haveFrame_ = true;
+    marker_->setFrame(index);
     requestRun();
 }
 
 void MainWindow::requestRun()
 {
-    if (haveFrame_) runner_.request(frame_.index, frame_.image, frame_.format, doc_.config(), generation_);
+    if (source_) runner_.request(source_, frameIndex_, doc_.config(), generation_);
 }
 
 bool MainWindow::isProcessing() const { return runner_.isBusy(); }
@@ -212,19 +294,25 @@ bool MainWindow::isProcessing() const { return runner_.isBusy(); }
 void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
 {
     lastRun_ = run;
+    marker_->setRun(run);
     if (!run->error.isEmpty() || !run->result.ok()) {
-        resultLabel_->setText(tr("Frame %1: %2").arg(run->frameIndex).arg(run->error.isEmpty() ? QString::fromStdString(run->result.error) : run->error));
+        // The panes keep the last good frame; the label says why this one is not shown.
+        const QString why = run->error.isEmpty() ? QString::fromStdString(run->result.error) : run->error;
+        resultLabel_->setText(run->frameUnreadable ? tr("Frame %1 skipped: %2").arg(run->frameIndex).arg(why)
+                                                   : tr("Frame %1: %2").arg(run->frameIndex).arg(why));
         emit runShown(run->frameIndex);
         return;
     }
     auto overlay = std::make_shared<OverlayData>();
     overlay->config = run->config;
+    overlay->maskOutline = run->maskOutline;
     overlay->candidates = run->result.candidates;
     overlay->detection = run->result.detection;
     view_->showRun(*run, overlay);
     candidates_->setResult(run->result);
 
     const BallDetection& d = run->result.detection;
+    nav_->setMark(run->frameIndex, FrameMarkKind::Detected, d.found);  // the slider marks every frame seen with a ball
     if (d.found) {
         resultLabel_->setText(tr("Frame %1: ball at x %2 m, y %3 m (%4 m away, radius %5 px)")
                                   .arg(run->frameIndex).arg(d.xM, 0, 'f', 2).arg(d.yM, 0, 'f', 2)
@@ -289,11 +377,18 @@ void MainWindow::chooseSource()
     if (!dir.isEmpty()) openSource(dir);
 }
 
+void MainWindow::chooseSourceFile()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open a video or an image"), QString(),
+                                                      tr("Videos and images (*.avi *.mp4 *.mkv *.mov *.png *.jpg *.jpeg *.bmp);;All files (*)"));
+    if (!path.isEmpty()) openSource(path);
+}
+
 void MainWindow::chooseConfig()
 {
     if (!maybeSave()) return;
     const QString path = QFileDialog::getOpenFileName(this, tr("Open config"), QString(), tr("Config (*.yml *.yaml)"));
-    if (!path.isEmpty()) openConfig(path);
+    if (!path.isEmpty() && openConfig(path)) recent_->add(path);
 }
 
 void MainWindow::updateTitle()
@@ -301,6 +396,56 @@ void MainWindow::updateTitle()
     const QString config = doc_.path().isEmpty() ? tr("default config") : QFileInfo(doc_.path()).fileName();
     setWindowTitle(tr("OmniTune - %1 - %2[*]").arg(sourceName_.isEmpty() ? tr("no source") : sourceName_, config));
     setWindowModified(doc_.isDirty());
+}
+
+void MainWindow::applyToSession()
+{
+    if (sourcePath_.isEmpty()) return;
+    if (!sweepDialog_) {
+        sweepDialog_ = new SessionSweepDialog(nav_, this);
+        connect(sweepDialog_, &SessionSweepDialog::sweepFinished, this, &MainWindow::onSessionSweepFinished);
+        connect(sweepDialog_, &SessionSweepDialog::rerunRequested, this, &MainWindow::applyToSession);
+        // From the first edit or save after a sweep (or during one) its numbers and marks
+        // describe an older pair of configs: say so rather than pass them off as current.
+        const auto outdate = [this] {
+            if (!sweepDialog_->result() && !sweepDialog_->isRunning()) return;
+            sweepDialog_->setOutdated(true);
+            nav_->setMarksOutdated(sweepMarkKinds());
+        };
+        connect(&doc_, &ConfigDocument::changed, sweepDialog_, outdate);
+        connect(&doc_, &ConfigDocument::dirtyChanged, sweepDialog_, outdate);
+    }
+    SweepRequest request;
+    request.sourcePath = sourcePath_;
+    request.current = doc_.config();
+    request.savedConfigPath = doc_.path();  // what the file holds, unsaved edits or not
+    request.truth = truth_.rows();
+    sweepDialog_->start(std::move(request));
+    sweepDialog_->show();
+    sweepDialog_->raise();
+}
+
+void MainWindow::onSessionSweepFinished(std::shared_ptr<const SweepResult> result)
+{
+    if (!result->ok()) {
+        statusBar()->showMessage(result->error, 10000);
+        return;
+    }
+    QVector<FrameMark> marks = sweepMarks(*result);
+    if (result->cancelled) {  // frames the sweep never reached keep what the live pipeline marked
+        QSet<int> visited;
+        for (const FrameOutcome& o : result->current) visited.insert(o.frame);
+        for (const FrameMark& m : nav_->slider()->marks(FrameMarkKind::Detected))
+            if (!visited.contains(m.frame)) marks.push_back(m);
+    }
+    nav_->setMarks(marks, sweepMarkKinds());
+    if (sweepDialog_->isOutdated()) nav_->setMarksOutdated(sweepMarkKinds());
+    statusBar()->showMessage(tr("Whole session: a ball in %1 of %2 frames, %3 changed")
+                                 .arg(std::count_if(result->current.begin(), result->current.end(),
+                                                    [](const FrameOutcome& o) { return o.detection.found; }))
+                                 .arg(result->visited)
+                                 .arg(result->comparison.changed()),
+                             8000);
 }
 
 }  // namespace omnitune

@@ -5,11 +5,13 @@
 #include "ConfigDocument.h"
 #include "FrameSource.h"
 #include "PipelineRunner.h"
+#include "TruthDocument.h"
 
 #include <QMainWindow>
 
 #include <memory>
 
+class QAction;
 class QLabel;
 
 namespace omnitune {
@@ -17,7 +19,11 @@ namespace omnitune {
 class CandidateTableModel;
 class FrameNavigator;
 class PipelineView;
+class SessionSweepDialog;
+struct SweepResult;
 class ThresholdPanel;
+class RecentFiles;
+class TruthMarker;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -29,8 +35,12 @@ public:
     // when the current config has no unsaved changes (else asks). False on failure (reported).
     bool openSource(const QString& path);
     bool openConfig(const QString& path);
+    // A config file (.yml, .yaml) opens as the config, anything else as a source.
+    bool openPath(const QString& path);
 
     ConfigDocument* document() { return &doc_; }
+    TruthDocument* truth() { return &truth_; }
+    TruthMarker* truthMarker() const { return marker_; }
     PipelineView* pipelineView() const { return view_; }
     FrameNavigator* navigator() const { return nav_; }
     ThresholdPanel* thresholdPanel() const { return panel_; }
@@ -42,12 +52,17 @@ public slots:
     void showFrame(int index);
     bool saveConfig();
     bool saveConfigAs();
+    // Session > Apply to whole session (Ctrl+R): the current and the saved config over every
+    // frame in the background (SessionSweepDialog); the slider then marks what changed.
+    void applyToSession();
 
 signals:
     void runShown(int frameIndex);  // the panes show the result of this frame now
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
     void buildMenus();
@@ -57,24 +72,36 @@ private:
     void updateTitle();
     void chooseSource();
     void chooseConfig();
+    void openTruth(const QString& sessionFolder);
+    void chooseSourceFile();
 
     ConfigDocument doc_;
+    TruthDocument truth_;
     PipelineRunner runner_;
     PipelineView* view_;
     FrameNavigator* nav_;
     ThresholdPanel* panel_;
     CandidateTableModel* candidates_;
+    TruthMarker* marker_;
+    RecentFiles* recent_ = nullptr;
     QLabel* resultLabel_;
+    QLabel* truthLabel_;
     QLabel* timingLabel_;
     QLabel* pixelLabel_;
-    std::unique_ptr<FrameSource> source_;
+    std::shared_ptr<FrameSource> source_;  // read on the runner's thread once handed to it
     QString sourceName_;
-    Frame frame_;
-    bool haveFrame_ = false;
+    int frameIndex_ = 0;  // the frame asked for last
     quint64 generation_ = 1;
     std::shared_ptr<const PipelineRun> lastRun_;
     double averageMs_ = 0;
     int averaged_ = 0;
+
+    // Apply to whole session: the source path it re-opens in its own thread, the action
+    // (enabled once a source is open) and the results dialog, made on first use.
+    void onSessionSweepFinished(std::shared_ptr<const SweepResult> result);
+    QString sourcePath_;
+    QAction* applyToSessionAction_ = nullptr;
+    SessionSweepDialog* sweepDialog_ = nullptr;
 };
 
 }  // namespace omnitune

@@ -9,6 +9,7 @@ int main(int argc, char** argv)
 {
     QApplication app(argc, argv);
     QApplication::setApplicationName("OmniTune");
+    QApplication::setOrganizationName("OmniTune");  // settings (recent files) in ~/.config/OmniTune
     omnitune::MainWindow window;
     const QString demo = QDir(QApplication::applicationDirPath()).filePath("../../sessions/demo");
     const QString source = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QFileInfo::exists("sessions/demo") ? "sessions/demo" : demo;

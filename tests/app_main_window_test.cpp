@@ -7,45 +7,19 @@
 #include "MainWindow.h"
 #include "PipelineView.h"
 #include "ThresholdPanel.h"
+#include "WindowTestSupport.h"
 
-#include <QAbstractButton>
 #include <QAbstractSpinBox>
-#include <QApplication>
-#include <QDirIterator>
-#include <QMessageBox>
+#include <QLabel>
+#include <QMenu>
+#include <QMimeData>
 #include <QtTest>
 
 using namespace omnitune;
 
 namespace {
 
-// Copies the demo session (the repository's copy must never change).
-bool copyDemo(const QString& to)
-{
-    const QString from = QStringLiteral(OMNITUNE_SOURCE_DIR "/sessions/demo");
-    QDirIterator it(from, QDir::Files, QDirIterator::Subdirectories);
-    while (it.hasNext()) {
-        const QString file = it.next();
-        const QString target = to + file.mid(from.size());
-        QDir().mkpath(QFileInfo(target).path());
-        if (!QFile::copy(file, target)) return false;
-    }
-    return true;
-}
-
-// Answers the next modal message box with `button` and keeps its text. Event driven: checks
-// again on every turn of the event loop until the box is there.
-void answerNextMessageBox(QMessageBox::StandardButton button, QString* text)
-{
-    QTimer::singleShot(0, [button, text] {
-        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
-            if (text) *text = box->text();
-            box->button(button)->click();
-            return;
-        }
-        answerNextMessageBox(button, text);
-    });
-}
+using namespace omnitune::testing;
 
 bool notBlank(const QImage& image)
 {
@@ -70,18 +44,15 @@ private:
     QString session_;
     std::unique_ptr<MainWindow> window_;
 
-    // Waits until the window shows a run for `frame` with the current config.
-    bool waitForFrame(int frame)
-    {
-        QSignalSpy spy(window_.get(), &MainWindow::runShown);
-        for (int i = 0; i < 50; ++i) {
-            if (!window_->isProcessing() && window_->lastRun() && window_->lastRun()->frameIndex == frame) return true;
-            spy.wait(200);
-        }
-        return false;
-    }
+    bool waitForFrame(int frame) { return omnitune::testing::waitForFrame(*window_, frame); }
 
 private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);  // recent files: not the user's settings
+        QSettings().clear();
+    }
+
     void init()
     {
         session_ = tmp_.filePath(QStringLiteral("demo-%1").arg(QDateTime::currentMSecsSinceEpoch()));
@@ -183,6 +154,51 @@ private slots:
         QVERIFY(window_->isVisible());
         answerNextMessageBox(QMessageBox::Discard, nullptr);
         QVERIFY(window_->close());
+    }
+
+    void unreadableFrameIsSkippedWithItsFileNamed()
+    {
+        const QString frame = session_ + "/frames/000001.png";
+        QFile f(frame);
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write("not a png");
+        f.close();
+        const QImage before = window_->pipelineView()->pane(PipelineView::Acquired)->image();
+        QTest::keyClick(window_.get(), Qt::Key_Right);
+        QVERIFY(waitForFrame(1));
+        QVERIFY(window_->lastRun()->frameUnreadable);
+        const QString text = window_->findChild<QLabel*>("result")->text();
+        QVERIFY2(text.contains("skipped") && text.contains("000001.png"), qPrintable(text));
+        QCOMPARE(window_->pipelineView()->pane(PipelineView::Acquired)->image(), before);  // the last good frame stays
+        QTest::keyClick(window_.get(), Qt::Key_Right);  // and the next one plays on
+        QVERIFY(waitForFrame(2));
+        QVERIFY(window_->lastRun()->result.ok());
+    }
+
+    void droppedFilesOpenAndAreRemembered()
+    {
+        const QString config = tmp_.filePath("dropped.yml");
+        QFile::remove(config);
+        QVERIFY(QFile::copy(session_ + "/config.yml", config));
+        QMimeData data;
+        data.setUrls({QUrl::fromLocalFile(config)});
+        const QPoint at = window_->rect().center();
+        QDragEnterEvent enter(at, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(window_.get(), &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(at, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(window_.get(), &drop);
+        QTRY_COMPARE(window_->document()->path(), config);
+
+        // Both the session (opened in init) and the dropped config are in File > Open recent.
+        QMenu* recent = nullptr;
+        for (QMenu* m : window_->findChildren<QMenu*>())
+            if (m->title().contains("recent")) recent = m;
+        QVERIFY(recent);
+        QStringList entries;
+        for (QAction* a : recent->actions()) entries << a->text();
+        QVERIFY2(entries.size() >= 2 && entries[0].contains("dropped.yml") && entries[1].contains(QFileInfo(session_).fileName()),
+                 qPrintable(entries.join(" | ")));
     }
 
     void noPaneIsBlankOnALaptopScreen()

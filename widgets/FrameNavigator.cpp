@@ -1,11 +1,12 @@
 #include "FrameNavigator.h"
 
+#include "MarkedSlider.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
-#include <QSlider>
 #include <QSpinBox>
 #include <QStyle>
 #include <QTimer>
@@ -31,8 +32,7 @@ FrameNavigator::FrameNavigator(QWidget* parent) : QWidget(parent), timer_(new QT
     playButton_ = button(this, QStyle::SP_MediaPlay, tr("Play / pause (Space)"));
     nextButton_ = button(this, QStyle::SP_MediaSeekForward, tr("Next frame (Right)"));
     lastButton_ = button(this, QStyle::SP_MediaSkipForward, tr("Last frame (End)"));
-    slider_ = new QSlider(Qt::Horizontal, this);
-    slider_->setToolTip(tr("Frame"));
+    slider_ = new MarkedSlider(this);  // its tooltip names the frame and explains the marks
     frameBox_ = new QSpinBox(this);
     frameBox_->setToolTip(tr("Jump to frame"));
     frameBox_->setKeyboardTracking(false);
@@ -78,6 +78,7 @@ void FrameNavigator::setFrameCount(int count)
     const QSignalBlocker a(slider_);
     const QSignalBlocker b(frameBox_);
     slider_->setRange(0, std::max(count_ - 1, 0));
+    slider_->clearMarks();
     frameBox_->setRange(0, std::max(count_ - 1, 0));
     setEnabled(count_ > 0);
     updateLabels();
@@ -90,6 +91,15 @@ void FrameNavigator::setFrameRate(double fps)
 }
 
 bool FrameNavigator::isPlaying() const { return timer_->isActive(); }
+
+void FrameNavigator::setMarks(const QVector<FrameMark>& marks, const QVector<FrameMarkKind>& kinds)
+{
+    slider_->setMarks(marks, kinds);
+}
+
+void FrameNavigator::setMark(int frame, FrameMarkKind kind, bool on) { slider_->setMark(frame, kind, on); }
+
+void FrameNavigator::setMarksOutdated(const QVector<FrameMarkKind>& kinds) { slider_->setOutdated(kinds); }
 
 void FrameNavigator::setCurrent(int index)
 {

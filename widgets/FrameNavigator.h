@@ -1,18 +1,22 @@
 #pragma once
 // Frame-by-frame control of a recorded source: first / previous / play / next / last, a slider,
 // a frame number box, loop and playback speed. It asks for frames (frameRequested); the
-// window decides what showing one means.
+// window decides what showing one means. The slider carries marks (FrameMark.h): where a
+// ball was detected, where a config change made one appear or vanish.
+#include "FrameMark.h"
+
 #include <QWidget>
 
 class QCheckBox;
 class QComboBox;
 class QLabel;
-class QSlider;
 class QSpinBox;
 class QTimer;
 class QToolButton;
 
 namespace omnitune {
+
+class MarkedSlider;
 
 class FrameNavigator : public QWidget {
     Q_OBJECT
@@ -24,6 +28,13 @@ public:
     int frameCount() const { return count_; }
     int current() const { return current_; }
     bool isPlaying() const;
+
+    // Slider marks (MarkedSlider): each owner replaces or sets only its own kinds. A new frame
+    // count clears them all: they belonged to the previous source.
+    void setMarks(const QVector<FrameMark>& marks, const QVector<FrameMarkKind>& kinds);
+    void setMark(int frame, FrameMarkKind kind, bool on);
+    void setMarksOutdated(const QVector<FrameMarkKind>& kinds);
+    MarkedSlider* slider() const { return slider_; }
 
 public slots:
     void setCurrent(int index);  // shows `index` as current; emits nothing
@@ -48,7 +59,7 @@ private:
     QToolButton* playButton_;
     QToolButton* nextButton_;
     QToolButton* lastButton_;
-    QSlider* slider_;
+    MarkedSlider* slider_;
     QSpinBox* frameBox_;
     QLabel* countLabel_;
     QCheckBox* loop_;

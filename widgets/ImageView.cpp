@@ -42,6 +42,20 @@ void ImageView::setOverlay(std::shared_ptr<const OverlayData> overlay)
     update();
 }
 
+void ImageView::setTruth(const TruthOverlay& truth)
+{
+    truth_ = truth;
+    update();
+}
+
+void ImageView::setMarking(bool on)
+{
+    marking_ = on;
+    markDown_ = false;
+    setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
+    update();
+}
+
 double ImageView::scale() const { return transform_->scaleFor(size(), image_.size()); }
 
 QPointF ImageView::imageCenter() const
@@ -68,6 +82,7 @@ void ImageView::paintEvent(QPaintEvent*)
         p.setRenderHint(QPainter::SmoothPixmapTransform, scale() < 1.0);
         p.drawImage(target, image_);
         paintOverlay(p);
+        paintTruth(p);
     } else {
         p.setPen(Qt::gray);
         p.drawText(rect(), Qt::AlignCenter, tr("no image"));
@@ -97,6 +112,14 @@ void ImageView::paintOverlay(QPainter& p) const
         const QPointF w = toWidget(centre);
         p.drawLine(w - QPointF(6, 0), w + QPointF(6, 0));
         p.drawLine(w - QPointF(0, 6), w + QPointF(0, 6));
+        if (overlay_->maskOutline) {
+            p.setPen(QPen(QColor(255, 160, 0, 220), 1));
+            for (const auto& line : *overlay_->maskOutline) {
+                QPolygonF poly;
+                for (const cv::Point& q : line) poly << toWidget(QPointF(q.x + 0.5, q.y + 0.5));
+                p.drawPolygon(poly);
+            }
+        }
     }
     if (overlays_->areas) {
         p.setPen(QPen(QColor(0, 200, 255, 160), 1, Qt::DashLine));
@@ -144,6 +167,34 @@ void ImageView::paintOverlay(QPainter& p) const
     }
 }
 
+void ImageView::paintTruth(QPainter& p) const
+{
+    if (!overlays_->truth && !truth_.marking) return;
+    QString label;
+    const QColor colour(255, 60, 255);
+    if (truth_.state == TruthOverlay::Ball) {
+        p.setRenderHint(QPainter::Antialiasing, true);
+        p.setPen(QPen(colour, 2, Qt::DashLine));
+        const double s = scale();
+        p.drawEllipse(toWidget(QPointF(truth_.x, truth_.y)), truth_.radius * s, truth_.radius * s);
+        const QPointF w = toWidget(QPointF(truth_.x, truth_.y));
+        p.drawLine(w - QPointF(4, 0), w + QPointF(4, 0));
+        p.drawLine(w - QPointF(0, 4), w + QPointF(0, 4));
+        label = tr("truth: ball");
+    } else if (truth_.state == TruthOverlay::NoBall) {
+        label = tr("truth: no ball");
+    } else if (truth_.marking) {
+        label = tr("truth: not marked");
+    }
+    if (label.isEmpty()) return;
+    // Top-right corner, away from the title.
+    const QFontMetrics fm(font());
+    const QRect box(width() - fm.horizontalAdvance(label) - 14, 4, fm.horizontalAdvance(label) + 10, fm.height() + 4);
+    p.fillRect(box, QColor(0, 0, 0, 170));
+    p.setPen(colour);
+    p.drawText(box, Qt::AlignCenter, label);
+}
+
 void ImageView::wheelEvent(QWheelEvent* event)
 {
     if (image_.isNull()) return;
@@ -153,13 +204,20 @@ void ImageView::wheelEvent(QWheelEvent* event)
 
 void ImageView::mousePressEvent(QMouseEvent* event)
 {
-    if (event->button() != Qt::LeftButton) return;
+    if (marking_ && event->button() == Qt::LeftButton && !image_.isNull()) {
+        markDown_ = true;
+        emit markPressed(toImage(event->localPos()));
+        return;
+    }
+    // The middle button always pans; the left one unless it marks.
+    if (event->button() != Qt::MiddleButton && (marking_ || event->button() != Qt::LeftButton)) return;
     dragging_ = true;
     dragStart_ = event->localPos();
 }
 
 void ImageView::mouseMoveEvent(QMouseEvent* event)
 {
+    if (markDown_) emit markDragged(toImage(event->localPos()));
     if (dragging_ && !transform_->isFit()) {
         transform_->panBy((event->localPos() - dragStart_) / scale());
         dragStart_ = event->localPos();
@@ -169,9 +227,24 @@ void ImageView::mouseMoveEvent(QMouseEvent* event)
     if (overlays_->cursorRadius) update();
 }
 
-void ImageView::mouseReleaseEvent(QMouseEvent*) { dragging_ = false; }
+void ImageView::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (markDown_ && event->button() == Qt::LeftButton) {
+        markDown_ = false;
+        emit markReleased(toImage(event->localPos()));
+        return;
+    }
+    dragging_ = false;
+}
 
-void ImageView::mouseDoubleClickEvent(QMouseEvent*) { emit doubleClicked(); }
+void ImageView::mouseDoubleClickEvent(QMouseEvent* event)
+{
+    if (marking_ && event->button() == Qt::LeftButton) {
+        mousePressEvent(event);  // two quick marks, not an enlarged pane
+        return;
+    }
+    emit doubleClicked();
+}
 
 void ImageView::leaveEvent(QEvent*)
 {

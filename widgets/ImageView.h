@@ -1,6 +1,8 @@
 #pragma once
 // One image pane: an image under the shared zoom/pan, a title, and the overlays. Wheel zooms
-// at the cursor, a drag pans (all panes follow through the shared ViewTransform).
+// at the cursor, a drag pans (all panes follow through the shared ViewTransform). In marking
+// mode the left button marks (press, drag, release are reported in image px) and the middle
+// button pans.
 #include "Overlay.h"
 #include "ViewTransform.h"
 
@@ -19,6 +21,8 @@ public:
     void setImage(const QImage& image);
     const QImage& image() const { return image_; }
     void setOverlay(std::shared_ptr<const OverlayData> overlay);
+    void setTruth(const TruthOverlay& truth);
+    void setMarking(bool on);
     QString title() const { return title_; }
 
     // Widget position <-> image position under the current transform.
@@ -29,6 +33,9 @@ signals:
     void hovered(QPointF imagePos);
     void left();
     void doubleClicked();
+    void markPressed(QPointF imagePos);
+    void markDragged(QPointF imagePos);
+    void markReleased(QPointF imagePos);
 
 protected:
     void paintEvent(QPaintEvent* event) override;
@@ -43,6 +50,7 @@ private:
     double scale() const;
     QPointF imageCenter() const;
     void paintOverlay(QPainter& p) const;
+    void paintTruth(QPainter& p) const;
 
     QString title_;
     ViewTransform* transform_;
@@ -51,6 +59,9 @@ private:
     std::shared_ptr<const OverlayData> overlay_;
     QPointF dragStart_;
     bool dragging_ = false;
+    bool marking_ = false;
+    bool markDown_ = false;
+    TruthOverlay truth_;
     QPointF cursor_{-1, -1};  // image position under the mouse, or negative
 };
 

@@ -2,8 +2,10 @@
 // What the panes draw over the images, and which of it is switched on.
 #include "BallCandidate.h"
 #include "Config.h"
+#include "MaskOutline.h"
 #include "PipelineResult.h"
 
+#include <memory>
 #include <vector>
 
 namespace omnitune {
@@ -15,10 +17,20 @@ struct OverlayOptions {
     bool candidates = true;    // every candidate with its three scores
     bool ball = true;          // the accepted ball with its world position
     bool cursorRadius = true;  // the expected ball circle under the cursor
+    bool truth = true;         // the ground truth marked for this frame
+};
+
+// The ground truth of the frame on screen, as the panes draw it.
+struct TruthOverlay {
+    enum State { Unmarked, NoBall, Ball };
+    State state = Unmarked;
+    double x = 0.0, y = 0.0, radius = 0.0;  // image px, when state == Ball
+    bool marking = false;  // truth-marking mode: say "not marked" instead of drawing nothing
 };
 
 struct OverlayData {
     Config config;                        // geometry, areas, ball model, sensors of the run
+    std::shared_ptr<const Polylines> maskOutline;  // border of config.mask; null or empty: none
     std::vector<BallCandidate> candidates;
     BallDetection detection;
 };

@@ -10,9 +10,8 @@ namespace omnitune {
 
 namespace {
 struct Request {
+    std::shared_ptr<FrameSource> source;
     int frameIndex;
-    cv::Mat frame;
-    PixelFormat format;
     Config config;
     quint64 generation;
 };
@@ -53,30 +52,53 @@ private:
                 pending_.reset();
                 running_ = true;
             }
-            auto run = std::make_shared<PipelineRun>();
-            run->frameIndex = r->frameIndex;
-            run->frame = r->frame;
-            run->format = r->format;
-            run->config = r->config;
-            try {
-                if (!pipeline_ || generation_ != r->generation) {
-                    pipeline_.reset();  // a config that cannot be built leaves no stale pipeline
-                    pipeline_ = std::make_unique<Pipeline>(r->config);
-                    generation_ = r->generation;
-                }
-                pipeline_->process(r->frame, r->format, run->result, true);
-            } catch (const std::exception& e) {
-                run->error = QString::fromStdString(e.what());  // the pipeline itself stays usable
-            }
-            emit finished(run);
+            emit finished(process(*r));
         }
+    }
+
+    std::shared_ptr<const PipelineRun> process(const Request& r)
+    {
+        auto run = std::make_shared<PipelineRun>();
+        run->frameIndex = r.frameIndex;
+        run->config = r.config;
+        // Changing only the config re-runs the frame already decoded.
+        if (r.source != source_ || r.frameIndex != frame_.index || frame_.image.empty()) {
+            source_ = r.source;
+            frame_ = Frame();
+            if (const auto err = source_->read(r.frameIndex, frame_)) {
+                frame_ = Frame();
+                run->error = QString::fromStdString(err->toString());
+                run->frameUnreadable = true;
+                return run;
+            }
+            frame_.index = r.frameIndex;
+        }
+        run->frame = frame_.image;
+        run->format = frame_.format;
+        try {
+            if (!pipeline_ || generation_ != r.generation) {
+                pipeline_.reset();  // a config that cannot be built leaves no stale pipeline
+                outline_ = std::make_shared<const Polylines>(maskOutline(r.config.mask));
+                pipeline_ = std::make_unique<Pipeline>(r.config);
+                generation_ = r.generation;
+            }
+            run->maskOutline = outline_;
+            pipeline_->process(frame_.image, frame_.format, run->result, true);
+        } catch (const std::exception& e) {
+            run->error = QString::fromStdString(e.what());  // the pipeline itself stays usable
+        }
+        return run;
     }
 
     mutable QMutex mutex_;
     std::optional<Request> pending_;
     bool running_ = false;
-    std::unique_ptr<Pipeline> pipeline_;  // worker thread only
+    // Worker thread only:
+    std::unique_ptr<Pipeline> pipeline_;
     quint64 generation_ = 0;
+    std::shared_ptr<const Polylines> outline_;
+    std::shared_ptr<FrameSource> source_;
+    Frame frame_;  // the last frame decoded from source_
 };
 
 PipelineRunner::PipelineRunner(QObject* parent) : QObject(parent), worker_(new PipelineWorker)
@@ -95,10 +117,10 @@ PipelineRunner::~PipelineRunner()
     thread_.wait();
 }
 
-void PipelineRunner::request(int frameIndex, const cv::Mat& frame, PixelFormat format, const Config& config,
+void PipelineRunner::request(std::shared_ptr<FrameSource> source, int frameIndex, const Config& config,
                              quint64 configGeneration)
 {
-    worker_->post({frameIndex, frame.clone(), format, config, configGeneration});
+    worker_->post({std::move(source), frameIndex, config, configGeneration});
 }
 
 bool PipelineRunner::isBusy() const { return worker_->busy(); }

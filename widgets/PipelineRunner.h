@@ -1,8 +1,10 @@
 #pragma once
-// Runs the pipeline off the GUI thread. Requests replace each other: while one frame is being
-// processed only the newest request waits, so dragging a slider never queues stale work and
-// the window never blocks on the detector.
+// Reads frames and runs the pipeline off the GUI thread. Requests replace each other: while one
+// frame is being processed only the newest request waits, so dragging a slider never queues
+// stale work and the window never blocks on decoding a frame or on the detector.
 #include "Config.h"
+#include "FrameSource.h"
+#include "MaskOutline.h"
 #include "PipelineResult.h"
 #include "PixelFormat.h"
 
@@ -18,8 +20,10 @@ struct PipelineRun {
     cv::Mat frame;            // the frame that was processed (BGR or UYVY)
     PixelFormat format = PixelFormat::Bgr8;
     Config config;            // the config this run used (overlays and the inspector use it)
+    std::shared_ptr<const Polylines> maskOutline;  // of config.mask; empty without a mask
     PipelineResult result;    // with the five stage images
-    QString error;            // the config could not be used (result then empty)
+    QString error;            // the frame could not be read or the config used (result then empty)
+    bool frameUnreadable = false;  // `error` is about the frame, not the config
 };
 
 class PipelineWorker;
@@ -30,9 +34,11 @@ public:
     explicit PipelineRunner(QObject* parent = nullptr);
     ~PipelineRunner() override;
 
-    // `configGeneration` changes whenever the config does; the worker rebuilds its pipeline
-    // (LUT, tables) only then.
-    void request(int frameIndex, const cv::Mat& frame, PixelFormat format, const Config& config, quint64 configGeneration);
+    // Frame `frameIndex` of `source`, read on the worker thread: from this call on, the source
+    // belongs to the worker (FrameSource is single-threaded); the window keeps only the
+    // pointer to pass back. `configGeneration` changes whenever the config does; the worker
+    // rebuilds its pipeline (LUT, tables) only then.
+    void request(std::shared_ptr<FrameSource> source, int frameIndex, const Config& config, quint64 configGeneration);
     bool isBusy() const;
 
 signals:

@@ -17,6 +17,9 @@ PipelineView::PipelineView(QWidget* parent) : QWidget(parent), grid_(new QGridLa
         connect(view, &ImageView::hovered, this, &PipelineView::hovered);
         connect(view, &ImageView::left, this, &PipelineView::left);
         connect(view, &ImageView::doubleClicked, this, [this, i] { toggleEnlarged(i); });
+        connect(view, &ImageView::markPressed, this, &PipelineView::markPressed);
+        connect(view, &ImageView::markDragged, this, &PipelineView::markDragged);
+        connect(view, &ImageView::markReleased, this, &PipelineView::markReleased);
     }
     relayout();
 }
@@ -53,6 +56,16 @@ void PipelineView::toggleEnlarged(int index)
 {
     enlarged_ = enlarged_ == index ? -1 : index;
     relayout();
+}
+
+void PipelineView::setTruth(const TruthOverlay& truth)
+{
+    for (ImageView* v : panes_) v->setTruth(truth);
+}
+
+void PipelineView::setMarking(bool on)
+{
+    for (ImageView* v : panes_) v->setMarking(on);
 }
 
 void PipelineView::showRun(const PipelineRun& run, std::shared_ptr<const OverlayData> overlay)

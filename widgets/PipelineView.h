@@ -28,10 +28,16 @@ public:
     // A widget for the grid's sixth cell, beside the two lower panes (the candidate table).
     void setSideWidget(QWidget* widget);
     int enlarged() const { return enlarged_; }
+    // Ground truth on every pane, and marking mode (left button marks instead of panning).
+    void setTruth(const TruthOverlay& truth);
+    void setMarking(bool on);
 
 signals:
     void hovered(QPointF imagePos);
     void left();
+    void markPressed(QPointF imagePos);
+    void markDragged(QPointF imagePos);
+    void markReleased(QPointF imagePos);
 
 private:
     void relayout();

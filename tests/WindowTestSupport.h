@@ -1,0 +1,53 @@
+#pragma once
+// Shared by the offscreen tests of the workbench window: a scratch copy of the demo session,
+// answering modal message boxes, and waiting (event driven) for a frame's run.
+#include "MainWindow.h"
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QDirIterator>
+#include <QMessageBox>
+#include <QtTest>
+
+namespace omnitune::testing {
+
+// Copies the demo session (the repository's copy must never change).
+inline bool copyDemo(const QString& to)
+{
+    const QString from = QStringLiteral(OMNITUNE_SOURCE_DIR "/sessions/demo");
+    QDirIterator it(from, QDir::Files, QDirIterator::Subdirectories);
+    while (it.hasNext()) {
+        const QString file = it.next();
+        const QString target = to + file.mid(from.size());
+        QDir().mkpath(QFileInfo(target).path());
+        if (!QFile::copy(file, target)) return false;
+    }
+    return true;
+}
+
+// Answers the next modal message box with `button` and keeps its text. Event driven: checks
+// again on every turn of the event loop until the box is there.
+inline void answerNextMessageBox(QMessageBox::StandardButton button, QString* text)
+{
+    QTimer::singleShot(0, [button, text] {
+        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+            if (text) *text = box->text();
+            box->button(button)->click();
+            return;
+        }
+        answerNextMessageBox(button, text);
+    });
+}
+
+// Waits until the window shows a run of `frame` and nothing is pending (about 10 s at most).
+inline bool waitForFrame(MainWindow& window, int frame)
+{
+    QSignalSpy spy(&window, &MainWindow::runShown);
+    for (int i = 0; i < 50; ++i) {
+        if (!window.isProcessing() && window.lastRun() && window.lastRun()->frameIndex == frame) return true;
+        spy.wait(200);
+    }
+    return false;
+}
+
+}  // namespace omnitune::testing

@@ -1,0 +1,84 @@
+#pragma once
+// Ground-truth marking on the panes: in marking mode a click on the ball's centre marks it
+// with the radius the ball model expects there, a drag from the centre sets the radius by
+// hand, one key accepts the detector's result (ball or no ball) as truth, one marks "no ball",
+// and each of these moves on to the next frame, so a tour of hundreds of frames is a click or
+// a key per frame. The marks go to the session's truth.csv through TruthDocument.
+#include "Overlay.h"
+#include "PipelineRunner.h"
+#include "TruthCsv.h"
+
+#include <QObject>
+#include <QPointF>
+
+#include <memory>
+#include <optional>
+
+class QMenu;
+
+namespace omnitune {
+
+class PipelineView;
+class TruthDocument;
+
+class TruthMarker : public QObject {
+    Q_OBJECT
+public:
+    // A drag shorter than this (image px) is a click: the model's radius is used.
+    static constexpr double kClickRadiusPx = 1.5;
+
+    TruthMarker(TruthDocument* truth, PipelineView* view, QObject* parent = nullptr);
+
+    void setFrameCount(int count);
+    void setFrame(int frame);  // the frame on screen
+    // The latest run: its config measures marked balls, its detection is what "accept" takes.
+    void setRun(std::shared_ptr<const PipelineRun> run);
+
+    bool isMarking() const { return marking_; }
+    void setMarking(bool on);
+    void setAdvanceAfterMark(bool on) { advance_ = on; }
+    bool advancesAfterMark() const { return advance_; }
+
+    // Each returns nothing on success, or why not (for the status bar).
+    // `radius` <= 0: the ball model's expected radius at the centre's distance.
+    std::optional<QString> markBall(QPointF centre, double radius);
+    std::optional<QString> acceptDetection();
+    std::optional<QString> markNoBall();
+    std::optional<QString> clearMark();
+
+    // The first frame after `from` (wrapping round) without a mark; -1 when all are marked.
+    int nextUnmarked(int from) const;
+    // "truth: ball 2.31 m away | 40 of 120 frames marked", or empty with no truth open.
+    QString describe() const;
+
+    // The Truth menu: marking mode (T), "next frame after each mark", and the marking keys
+    // (A, N, Delete, U), which act only in marking mode so a stray key never writes truth.
+    void fillMenu(QMenu* menu);
+
+signals:
+    void advanceRequested();          // a mark was made with "advance after marking" on
+    void frameRequested(int frame);   // "next unmarked frame"
+    void message(const QString& text);  // a refusal or failed save, for the status bar
+    void described(const QString& text);  // describe() changed
+
+private:
+    void onPressed(QPointF p);
+    void onDragged(QPointF p);
+    void onReleased(QPointF p);
+    std::optional<QString> commit(TruthRow row);
+    void refresh();
+    bool runIsCurrent() const;
+
+    TruthDocument* truth_;
+    PipelineView* view_;
+    std::shared_ptr<const PipelineRun> run_;
+    int frame_ = -1;
+    int count_ = 0;
+    bool marking_ = false;
+    bool advance_ = true;
+    bool dragging_ = false;
+    QPointF dragCentre_;
+    double dragRadius_ = 0.0;
+};
+
+}  // namespace omnitune
