@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 
 #include "CandidateTableModel.h"
+#include "CandidateTableView.h"
 #include "FrameNavigator.h"
 #include "FrameSourceFactory.h"
 #include "MarkedSlider.h"
@@ -19,14 +20,12 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSet>
 #include <QStatusBar>
-#include <QTableView>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -58,28 +57,9 @@ MainWindow::MainWindow(QWidget* parent)
     panelDock->setWidget(panel_);
     addDockWidget(Qt::RightDockWidgetArea, panelDock);
 
-    auto* table = new QTableView(this);
-    table->setObjectName("candidateTable");
-    table->setModel(candidates_);
-    table->setSelectionBehavior(QAbstractItemView::SelectRows);
-    table->verticalHeader()->hide();
-    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    // The verdict first, then the scores that explain it.
-    table->horizontalHeader()->moveSection(CandidateTableModel::ResultColumn, 1);
-    QFont tableFont = table->font();
-    tableFont.setPointSizeF(tableFont.pointSizeF() * 0.9);
-    table->setFont(tableFont);
-    table->verticalHeader()->setDefaultSectionSize(table->fontMetrics().height() + 6);
-    table->setToolTip(tr("Candidates of this frame (thesis Table 4.1): click one to centre the panes on it"));
-    // The cell is narrow: keep the area, radius, the three scores and the verdict in view.
-    for (int column : {CandidateTableModel::SourceColumn, CandidateTableModel::XColumn, CandidateTableModel::YColumn,
-                       CandidateTableModel::DistanceColumn, CandidateTableModel::AccumulatorColumn})
-        table->hideColumn(column);
+    auto* table = new CandidateTableView(candidates_, this);
     view_->setSideWidget(table);
-    connect(table, &QTableView::clicked, this, [this](const QModelIndex& index) {
-        const BallCandidate& c = candidates_->candidate(index.row());
-        view_->transform()->centerOn(QPointF(c.x, c.y));
-    });
+    connect(table, &CandidateTableView::candidateClicked, view_->transform(), &ViewTransform::centerOn);
 
     statusBar()->addWidget(pixelLabel_, 1);
     statusBar()->addPermanentWidget(timingLabel_);

@@ -2,6 +2,7 @@
 // changes the panes, a threshold edit re-runs the frame and is undoable, the config saves and
 // reloads, a broken config is refused with a dialog naming the key, closing with unsaved
 // changes asks first, and at 1366x768 no pane is blank.
+#include "CandidateTableModel.h"
 #include "ConfigParser.h"
 #include "FrameNavigator.h"
 #include "MainWindow.h"
@@ -13,6 +14,7 @@
 #include <QLabel>
 #include <QMenu>
 #include <QMimeData>
+#include <QTableView>
 #include <QtTest>
 
 using namespace omnitune;
@@ -154,6 +156,19 @@ private slots:
         QVERIFY(window_->isVisible());
         answerNextMessageBox(QMessageBox::Discard, nullptr);
         QVERIFY(window_->close());
+    }
+
+    void clickingACandidateCentresThePanes()
+    {
+        window_->pipelineView()->transform()->setZoom(4.0, QPointF(10, 10));
+        auto* table = window_->findChild<QTableView*>("candidateTable");
+        QVERIFY(table && table->model()->rowCount() > 1);
+        const int row = table->model()->rowCount() - 1;
+        const BallCandidate& c = window_->candidates()->candidate(row);
+        const QRect cell = table->visualRect(table->model()->index(row, CandidateTableModel::ResultColumn));
+        QTest::mouseClick(table->viewport(), Qt::LeftButton, Qt::NoModifier, cell.center());
+        QCOMPARE(window_->pipelineView()->transform()->center(), QPointF(c.x, c.y));
+        QCOMPARE(window_->pipelineView()->transform()->zoom(), 4.0);
     }
 
     void unreadableFrameIsSkippedWithItsFileNamed()
