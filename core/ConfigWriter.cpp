@@ -71,9 +71,11 @@ std::string serializeConfig(const Config& config)
     return fs.releaseAndGetString();
 }
 
-std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& bytes, bool keepBackup)
+namespace {
+
+// Step 1 of an atomic write: the bytes in `path`.tmp, flushed to disk.
+std::optional<std::string> writeTemp(const std::string& path, const std::string& bytes)
 {
-    namespace fs = std::filesystem;
     const std::string tmp = path + ".tmp";
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) return "cannot create " + tmp + ": " + errnoText();
@@ -97,6 +99,14 @@ std::optional<std::string> writeFileAtomically(const std::string& path, const st
         ::unlink(tmp.c_str());
         return "cannot flush " + tmp + ": " + why;
     }
+    return std::nullopt;
+}
+
+// Step 2: keep `path`.bak when asked, then rename the temp over `path`.
+std::optional<std::string> replaceWithTemp(const std::string& path, bool keepBackup)
+{
+    namespace fs = std::filesystem;
+    const std::string tmp = path + ".tmp";
     std::error_code ec;
     if (keepBackup && fs::exists(path, ec)) {
         fs::copy_file(path, path + ".bak", fs::copy_options::overwrite_existing, ec);
@@ -113,23 +123,43 @@ std::optional<std::string> writeFileAtomically(const std::string& path, const st
     return std::nullopt;
 }
 
+}  // namespace
+
+std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& bytes, bool keepBackup)
+{
+    if (auto err = writeTemp(path, bytes)) return err;
+    return replaceWithTemp(path, keepBackup);
+}
+
 std::optional<ConfigIssue> saveConfig(const Config& config, const std::string& path)
 {
     const auto problems = checkConfig(config, path);
     if (!problems.empty()) return problems.front();
+    // Both files are written and flushed before either replaces its old version, so a failure
+    // (full disk, no permission) never leaves a new mask beside the old config.
+    std::string maskPath;
     if (!config.mask.empty()) {
         if (config.geometry.maskFile.empty())
             return ConfigIssue{ConfigIssueKind::MaskError, path, 0, "geometry.mask_file",
                                "the config holds a mask image but geometry.mask_file names no file for it"};
-        const auto maskPath = (std::filesystem::path(path).parent_path() / config.geometry.maskFile).string();
+        maskPath = (std::filesystem::path(path).parent_path() / config.geometry.maskFile).string();
         std::vector<std::uint8_t> png;
         if (!cv::imencode(".png", config.mask, png))
             return ConfigIssue{ConfigIssueKind::WriteError, maskPath, 0, "geometry.mask_file", "cannot encode the mask as PNG"};
-        if (auto err = writeFileAtomically(maskPath, std::string(png.begin(), png.end())))
+        if (auto err = writeTemp(maskPath, std::string(png.begin(), png.end())))
             return ConfigIssue{ConfigIssueKind::WriteError, maskPath, 0, "geometry.mask_file", *err};
     }
-    if (auto err = writeFileAtomically(path, serializeConfig(config)))
+    if (auto err = writeTemp(path, serializeConfig(config))) {
+        if (!maskPath.empty()) ::unlink((maskPath + ".tmp").c_str());
         return ConfigIssue{ConfigIssueKind::WriteError, path, 0, "", *err};
+    }
+    if (!maskPath.empty()) {
+        if (auto err = replaceWithTemp(maskPath, true)) {
+            ::unlink((path + ".tmp").c_str());
+            return ConfigIssue{ConfigIssueKind::WriteError, maskPath, 0, "geometry.mask_file", *err};
+        }
+    }
+    if (auto err = replaceWithTemp(path, true)) return ConfigIssue{ConfigIssueKind::WriteError, path, 0, "", *err};
     return std::nullopt;
 }
 

@@ -246,6 +246,29 @@ private slots:
         QCOMPARE(cv::countNonZero(load.config.mask != c.mask), 0);
     }
 
+    void aFailedSaveLeavesTheMaskAndTheConfigAsTheyWere()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("config.yml");
+        Config c;
+        c.geometry.maskFile = "mask.png";
+        c.mask = cv::Mat(480, 640, CV_8UC1, cv::Scalar(255));
+        QVERIFY(!saveConfig(c, path.toStdString()));
+        QFile maskFile(dir.filePath("mask.png"));
+        QVERIFY(maskFile.open(QIODevice::ReadOnly));
+        const QByteArray maskBefore = maskFile.readAll();
+        maskFile.close();
+        QVERIFY(QDir(dir.path()).mkdir("config.yml.tmp"));  // the config's temp file cannot be created
+
+        cv::rectangle(c.mask, cv::Rect(0, 0, 100, 100), cv::Scalar(0), cv::FILLED);
+        const auto err = saveConfig(c, path.toStdString());
+        QVERIFY(err);
+        QVERIFY2(QString::fromStdString(err->toString()).contains("config.yml.tmp"), err->toString().c_str());
+        QVERIFY(maskFile.open(QIODevice::ReadOnly));
+        QCOMPARE(maskFile.readAll(), maskBefore);  // the new mask never replaced the old one
+        QVERIFY(!QFile::exists(dir.filePath("mask.png.tmp")));
+    }
+
     void maskProblemsAreNamed_data()
     {
         QTest::addColumn<bool>("writeMask");
