@@ -12,6 +12,7 @@ std::string_view rejectReasonName(RejectReason r)
     case RejectReason::NonGreen: return "non-green";
     case RejectReason::NonBlack: return "non-black";
     case RejectReason::Circularity: return "circularity";
+    case RejectReason::RunsOn: return "runs on";
     case RejectReason::NotChosen: return "valid, not chosen";
     }
     return "?";

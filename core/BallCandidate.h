@@ -1,6 +1,7 @@
 #pragma once
 // A possible ball: a Hough maximum (specific path) or circle (OpenCV path) with the three
-// validation scores of thesis section 4.4 / Table 4.1 and the test that rejected it.
+// validation scores of thesis section 4.4 / Table 4.1 (plus our run-on score) and the test
+// that rejected it.
 #include <string_view>
 
 namespace omnitune {
@@ -15,6 +16,7 @@ enum class RejectReason {
     NonGreen,         // too much green in the ball square
     NonBlack,         // too much black in the ball square (a robot)
     Circularity,      // too few edges at the expected radius
+    RunsOn,           // the centre's colour runs on beyond the circle on too many rays: a line corner or end
     NotChosen,        // valid, but another valid candidate scored higher
 };
 
@@ -25,6 +27,8 @@ struct ValidationScores {
     double nonBlackPct = 0.0;    // % that are not black
     double circularityPct = 0.0; // % of rays that meet an edge at the expected radius +- tolerance
     double borderSpreadPx = 0.0; // std of the radius at which those rays met the edge
+    double runOnPct = 0.0;       // % of the judged rays along which the centre's colour class runs
+                                 // on beyond the circle (validation.max_run_on_pct)
 };
 
 struct BallCandidate {

@@ -209,6 +209,9 @@ std::vector<ConfigKey> buildSchema()
     s.push_back(boolKey("validation.ignore_occluded_rays", false,
                         "Rays whose border leads into black (a robot hiding part of the ball) are not judged; 0: they count as misses",
                         [](auto& c) -> auto& { return c.validation.ignoreOccludedRays; }));
+    s.push_back(doubleKey("validation.max_run_on_pct", "%", 0, 100, false,
+                          "Rejects a candidate when on more of its rays the centre's colour runs on past 1.3 radii (line corners and ends); 100: off",
+                          [](auto& c) -> auto& { return c.validation.maxRunOnPct; }));
 
     // algorithm
     ConfigKey alg{"algorithm.method", ValueType::Choice, "", 0, 0,
@@ -368,7 +371,7 @@ std::string configSchemaMarkdown()
         {"edges", "Canny on the green / non-green image (thesis 4, Fig. 4.6)."},
         {"hough", "Specific circular Hough transform (thesis 4.1)."},
         {"opencv_hough", "cv::HoughCircles with HOUGH_GRADIENT (thesis 4.2)."},
-        {"validation", "Candidate validation (thesis 4.4); all three tests must pass."},
+        {"validation", "Candidate validation (thesis 4.4): the three tests and our rules must all pass."},
         {"algorithm", "Which search runs (thesis 4.1-4.3)."},
     };
     const Config defaults;

@@ -65,9 +65,9 @@ private slots:
         for (Algorithm a : {Algorithm::Specific, Algorithm::OpenCv, Algorithm::Combined})
             QTest::newRow(algorithmName(a).data()) << a;
     }
-    // Known limit (docs/evaluation.md): acute corners of lines 3.1-3.4 m away, where a ball
-    // has 4.0-4.6 px radius, pass the three tests in ~4 % of ball-less frames. Nothing nearer
-    // may be detected, and the far ones must stay rare.
+    // Acute corners and ends of lines 3.1-3.4 m away, where a ball has 4.0-4.6 px radius, pass
+    // the three thesis tests; the run-on test (validation.max_run_on_pct) rejects them, so
+    // nothing at all may be detected.
     void nothingWithoutABall()
     {
         QFETCH(Algorithm, algorithm);
@@ -79,18 +79,14 @@ private slots:
         tour.frames = kFrames;
         tour.seed = 5;
         PipelineResult r;
-        int farFound = 0;
         for (SceneOptions scene : makeTour(tour)) {
             scene.ballPresent = false;
             pipeline.process(sim.render(scene), PixelFormat::Bgr8, r);
             QVERIFY2(r.ok(), r.error.c_str());
             QVERIFY(!r.candidates.empty());  // the lines do give candidates: validation rejects them
-            if (!r.detection.found) continue;
-            QVERIFY2(r.detection.distanceM > 3.0,
+            QVERIFY2(!r.detection.found,
                      qPrintable(QString("false ball %1 m away at (%2, %3)").arg(r.detection.distanceM).arg(r.detection.px).arg(r.detection.py)));
-            ++farFound;
         }
-        QVERIFY2(farFound <= kFrames / 20, qPrintable(QString("%1 false balls in %2 frames").arg(farFound).arg(kFrames)));
     }
 
     // World position: the detection in metres agrees with the simulator's truth.

@@ -124,6 +124,54 @@ private slots:
         QCOMPARE(c.rejected, RejectReason::TooSmall);
     }
 
+    // Far away (205 px, expected radius 4.3 px) the rounded tip of an acute line corner passes the
+    // three thesis tests like a ball; the run-on test sees the lines go on beyond the circle.
+    void lineCornerRunsOn()
+    {
+        const BallCandidate c = validateAt(205, 40, [](cv::Mat& f, const Config&, cv::Point p, double r) {
+            const int ri = int(std::lround(r));
+            // Two lines half as wide as the ball meet 30 degrees apart; their junction is a blob
+            // with the ball's radius (simulated frames show such corners 3.1-3.4 m away).
+            cv::circle(f, p, ri, kWhite, cv::FILLED);
+            cv::line(f, p, p + cv::Point(60, 0), kWhite, ri);
+            cv::line(f, p, p + cv::Point(52, 30), kWhite, ri);
+        });
+        QVERIFY2(c.rejected == RejectReason::RunsOn,
+                 qPrintable(QString("rejected by %1 (scores %2 / %3 / %4, run-on %5)")
+                                .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
+                                .arg(c.scores.nonGreenPct)
+                                .arg(c.scores.nonBlackPct)
+                                .arg(c.scores.circularityPct)
+                                .arg(c.scores.runOnPct)));
+        QVERIFY(c.scores.runOnPct > Config{}.validation.maxRunOnPct);
+    }
+
+    // The same distance, a ball on carpet: nothing of its colour lies beyond its border. Beside
+    // a line (a strip of carpet between them) it still passes.
+    void ballDoesNotRunOn_data()
+    {
+        QTest::addColumn<bool>("lineBeside");
+        QTest::newRow("on carpet") << false;
+        QTest::newRow("beside a line") << true;
+    }
+    void ballDoesNotRunOn()
+    {
+        QFETCH(bool, lineBeside);
+        const BallCandidate c = validateAt(205, 40, [lineBeside](cv::Mat& f, const Config&, cv::Point p, double r) {
+            const int ri = int(std::lround(r));
+            if (lineBeside) cv::line(f, p + cv::Point(2 * ri + 2, -40), p + cv::Point(2 * ri + 2, 40), kWhite, ri);
+            cv::circle(f, p, ri, kOrange, cv::FILLED);
+        });
+        QVERIFY2(c.rejected == RejectReason::None,
+                 qPrintable(QString("rejected by %1 (scores %2 / %3 / %4, run-on %5)")
+                                .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
+                                .arg(c.scores.nonGreenPct)
+                                .arg(c.scores.nonBlackPct)
+                                .arg(c.scores.circularityPct)
+                                .arg(c.scores.runOnPct)));
+        QCOMPARE(c.scores.runOnPct, 0.0);
+    }
+
     void thresholdsAreTheConfigs()
     {
         // The same orange ball fails when the circularity threshold is raised above its score.

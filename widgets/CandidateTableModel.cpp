@@ -71,6 +71,7 @@ int CandidateTableModel::failingColumn(RejectReason reason)
     case RejectReason::NonGreen: return NonGreenColumn;
     case RejectReason::NonBlack: return NonBlackColumn;
     case RejectReason::Circularity: return CircularityColumn;
+    case RejectReason::RunsOn: return ResultColumn;
     case RejectReason::None:
     case RejectReason::OutsideArea:
     case RejectReason::NotChosen: return -1;
