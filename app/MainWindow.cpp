@@ -69,6 +69,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(&doc_, &ConfigDocument::changed, this, [this] {
         ++generation_;  // "repeat frame": every change re-runs the frame on screen
         requestRun();
+        nav_->setMarksOutdated({FrameMarkKind::Detected});  // seen with the old config; renewed as frames show
     });
     connect(&doc_, &ConfigDocument::dirtyChanged, this, &MainWindow::updateTitle);
     connect(&doc_, &ConfigDocument::pathChanged, this, &MainWindow::updateTitle);
@@ -76,7 +77,13 @@ MainWindow::MainWindow(QWidget* parent)
         pixelLabel_->setText(lastRun_ ? describePixel(*lastRun_, lastRun_->config, p) : QString());
     });
     connect(view_, &PipelineView::left, pixelLabel_, &QLabel::clear);
-    connect(marker_, &TruthMarker::advanceRequested, nav_, &FrameNavigator::next);
+    connect(marker_, &TruthMarker::advanceRequested, this, [this] {
+        // Never round to frame 0 (its mark would be next to be overwritten), loop or not.
+        if (nav_->current() + 1 < nav_->frameCount())
+            nav_->next();
+        else
+            statusBar()->showMessage(tr("Last frame marked; U finds the frames still unmarked"), 8000);
+    });
     connect(marker_, &TruthMarker::frameRequested, nav_, &FrameNavigator::goTo);
     connect(marker_, &TruthMarker::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     connect(marker_, &TruthMarker::described, truthLabel_, &QLabel::setText);
@@ -98,7 +105,15 @@ MainWindow::MainWindow(QWidget* parent)
     resize(1366, 768);
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // The documents outlive the widgets and labels declared after them; a dirty undo stack
+    // still signals "clean" while it is destroyed. Nothing may reach the half-destroyed window.
+    doc_.disconnect();
+    truth_.disconnect();
+    delete sweepDialog_;  // stops its thread before the members it reports to go
+    sweepDialog_ = nullptr;
+}
 
 void MainWindow::buildMenus()
 {
@@ -138,7 +153,8 @@ void MainWindow::buildMenus()
     const std::pair<QString, bool*> toggles[] = {
         {tr("Robot centre, mask radii and mask outline"), &o.geometry}, {tr("Radial areas"), &o.areas},
         {tr("Radial sensors"), &o.sensors},               {tr("Candidates with scores"), &o.candidates},
-        {tr("Accepted ball"), &o.ball},                    {tr("Expected ball under the cursor"), &o.cursorRadius}};
+        {tr("Accepted ball"), &o.ball},                    {tr("Expected ball under the cursor"), &o.cursorRadius},
+        {tr("Ground truth"), &o.truth}};
     for (const auto& [name, flag] : toggles) {
         QAction* a = view->addAction(name);
         a->setCheckable(true);
@@ -176,6 +192,7 @@ bool MainWindow::openSource(const QString& path)
         QMessageBox::warning(this, tr("Cannot open"), QString::fromStdString(opened.error));
         return false;
     }
+    if (!maybeKeepTruth()) return false;
     if (!opened.warnings.empty()) {
         QStringList w;
         for (const auto& s : opened.warnings) w << QString::fromStdString(s);
@@ -187,6 +204,7 @@ bool MainWindow::openSource(const QString& path)
         openConfig(QString::fromStdString(session->reader().configPath()));
     const QString sessionFolder = session ? QString::fromStdString(session->reader().folder()) : QString();
     source_ = std::move(opened.source);
+    ++sourceTag_;
     sourceName_ = QFileInfo(path).fileName();
     sourcePath_ = path;  // Apply to whole session re-opens it in a thread of its own
     applyToSessionAction_->setEnabled(true);
@@ -266,13 +284,14 @@ void MainWindow::showFrame(int index)
 
 void MainWindow::requestRun()
 {
-    if (source_) runner_.request(source_, frameIndex_, doc_.config(), generation_);
+    if (source_) runner_.request(source_, sourceTag_, frameIndex_, doc_.config(), generation_);
 }
 
 bool MainWindow::isProcessing() const { return runner_.isBusy(); }
 
 void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
 {
+    if (run->sourceTag != sourceTag_) return;  // a frame of the source open before this one
     lastRun_ = run;
     marker_->setRun(run);
     if (!run->error.isEmpty() || !run->result.ok()) {
@@ -343,9 +362,19 @@ bool MainWindow::maybeSave()
     return answer == QMessageBox::Discard;
 }
 
+bool MainWindow::maybeKeepTruth()
+{
+    if (!truth_.hasUnsavedMarks()) return true;
+    const auto err = truth_.save();
+    if (!err) return true;
+    return QMessageBox::warning(this, tr("Unsaved ground truth"),
+                                tr("Ground-truth marks could not be saved: %1\n\nDiscard them?").arg(*err),
+                                QMessageBox::Discard | QMessageBox::Cancel) == QMessageBox::Discard;
+}
+
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (maybeSave())
+    if (maybeKeepTruth() && maybeSave())
         event->accept();
     else
         event->ignore();
@@ -394,6 +423,7 @@ void MainWindow::applyToSession()
         };
         connect(&doc_, &ConfigDocument::changed, sweepDialog_, outdate);
         connect(&doc_, &ConfigDocument::dirtyChanged, sweepDialog_, outdate);
+        connect(&truth_, &TruthDocument::changed, sweepDialog_, outdate);  // its ratio and false positives
     }
     SweepRequest request;
     request.sourcePath = sourcePath_;

@@ -69,6 +69,7 @@ private:
     void requestRun();
     void onRunFinished(std::shared_ptr<const PipelineRun> run);
     bool maybeSave();
+    bool maybeKeepTruth();  // retries a failed truth.csv save; asks before marks are dropped
     void updateTitle();
     void chooseSource();
     void chooseConfig();
@@ -91,6 +92,7 @@ private:
     std::shared_ptr<FrameSource> source_;  // read on the runner's thread once handed to it
     QString sourceName_;
     int frameIndex_ = 0;  // the frame asked for last
+    quint64 sourceTag_ = 0;  // counts the sources opened; runs carry it
     quint64 generation_ = 1;
     std::shared_ptr<const PipelineRun> lastRun_;
     double averageMs_ = 0;

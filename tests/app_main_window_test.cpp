@@ -66,7 +66,7 @@ private slots:
     }
     void cleanup()
     {
-        window_->document()->undoStack()->setClean();  // no prompt on teardown
+        if (window_) window_->document()->undoStack()->setClean();  // no prompt on teardown
         window_.reset();
     }
 
@@ -156,6 +156,8 @@ private slots:
         QVERIFY(window_->isVisible());
         answerNextMessageBox(QMessageBox::Discard, nullptr);
         QVERIFY(window_->close());
+        QVERIFY(window_->document()->isDirty());
+        window_.reset();  // destroyed dirty: the undo stack's last signal must not reach the window (ASan)
     }
 
     void clickingACandidateCentresThePanes()
@@ -214,6 +216,10 @@ private slots:
         for (QAction* a : recent->actions()) entries << a->text();
         QVERIFY2(entries.size() >= 2 && entries[0].contains("dropped.yml") && entries[1].contains(QFileInfo(session_).fileName()),
                  qPrintable(entries.join(" | ")));
+
+        // Choosing the session entry opens it again, with its own config.
+        recent->actions()[1]->trigger();
+        QTRY_COMPARE(window_->document()->path(), session_ + "/config.yml");
     }
 
     void noPaneIsBlankOnALaptopScreen()

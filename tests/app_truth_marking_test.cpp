@@ -75,6 +75,11 @@ private slots:
         QTest::keyClick(window_.get(), Qt::Key_A);
         QVERIFY(window_->truth()->rows().empty());
         QVERIFY(!QFile::exists(truthPath()));
+        QVERIFY(!window_->truth()->set(TruthRow{}));  // frame 0: "no ball", by hand
+        QTest::keyClick(window_.get(), Qt::Key_Delete);
+        QTest::keyClick(window_.get(), Qt::Key_U);
+        QVERIFY(window_->truth()->row(0));
+        QCOMPARE(window_->navigator()->current(), 0);
         QTest::keyClick(window_.get(), Qt::Key_T);
         QVERIFY(window_->truthMarker()->isMarking());
         QTest::keyClick(window_.get(), Qt::Key_T);
@@ -126,6 +131,12 @@ private slots:
         const QPoint at = widgetPos(d.px, d.py);
         QTest::mouseClick(acquired(), Qt::LeftButton, Qt::NoModifier, at);
         QCOMPARE(window_->navigator()->current(), 1);
+        // Frame 1 is asked for but the panes still show frame 0: a second quick click (or a
+        // double click) must not give frame 1 frame 0's ball.
+        QVERIFY(window_->lastRun()->frameIndex == 0);
+        QTest::mouseClick(acquired(), Qt::LeftButton, Qt::NoModifier, at);
+        QVERIFY(!window_->truth()->row(1));
+        QCOMPARE(window_->navigator()->current(), 1);
         const TruthRow* clicked = window_->truth()->row(0);
         QVERIFY(clicked && clicked->ballVisible);
         const QPointF where = imagePos(at);  // the click lands on a whole widget pixel
@@ -137,6 +148,8 @@ private slots:
 
         // Frame 1: press on a centre, drag 40 widget px out, release: the radius follows.
         QVERIFY(waitForFrame(*window_, 1));
+        QTest::mouseClick(acquired(), Qt::LeftButton, Qt::NoModifier, widgetPos(-20, 100));  // off the image
+        QVERIFY(!window_->truth()->row(1));
         const QPoint centre = widgetPos(200, 200);
         const QPoint out = centre + QPoint(40, 0);
         QTest::mousePress(acquired(), Qt::LeftButton, Qt::NoModifier, centre);
@@ -167,9 +180,28 @@ private slots:
 
         window_.reset();
         window_ = std::make_unique<MainWindow>();
+        window_->show();
         QVERIFY(window_->openSource(session_));
+        QVERIFY(waitForFrame(*window_, 0));
         QVERIFY(window_->truth()->row(1) && !window_->truth()->row(1)->ballVisible);
+        QTest::keyClick(window_.get(), Qt::Key_End);
+        QVERIFY(waitForFrame(*window_, 23));
+        QTest::keyClick(window_.get(), Qt::Key_T);
+        QTest::keyClick(window_.get(), Qt::Key_N);  // reopened and marked again: still the original backup
+        QVERIFY(!readTruth(truthPath()).at(23).ballVisible);
+        QCOMPARE(fileBytes(truthPath() + ".bak"), original);
         QCOMPARE(window_->navigator()->slider()->marks(FrameMarkKind::Truth).size(), 24);  // the loaded file marks the slider
+    }
+
+    void theLastFrameIsMarkedWithoutGoingRound()
+    {
+        open(false);
+        QTest::keyClick(window_.get(), Qt::Key_End);
+        QVERIFY(waitForFrame(*window_, 23));
+        QTest::keyClick(window_.get(), Qt::Key_T);
+        QTest::keyClick(window_.get(), Qt::Key_N);
+        QVERIFY(window_->truth()->row(23));
+        QCOMPARE(window_->navigator()->current(), 23);  // loop is on, yet marking stops here
     }
 
     void brokenTruthFileIsNeverOverwritten()

@@ -11,6 +11,7 @@ namespace omnitune {
 namespace {
 struct Request {
     std::shared_ptr<FrameSource> source;
+    quint64 sourceTag;
     int frameIndex;
     Config config;
     quint64 generation;
@@ -59,6 +60,7 @@ private:
     std::shared_ptr<const PipelineRun> process(const Request& r)
     {
         auto run = std::make_shared<PipelineRun>();
+        run->sourceTag = r.sourceTag;
         run->frameIndex = r.frameIndex;
         run->config = r.config;
         // Changing only the config re-runs the frame already decoded.
@@ -117,10 +119,10 @@ PipelineRunner::~PipelineRunner()
     thread_.wait();
 }
 
-void PipelineRunner::request(std::shared_ptr<FrameSource> source, int frameIndex, const Config& config,
-                             quint64 configGeneration)
+void PipelineRunner::request(std::shared_ptr<FrameSource> source, quint64 sourceTag, int frameIndex,
+                             const Config& config, quint64 configGeneration)
 {
-    worker_->post({std::move(source), frameIndex, config, configGeneration});
+    worker_->post({std::move(source), sourceTag, frameIndex, config, configGeneration});
 }
 
 bool PipelineRunner::isBusy() const { return worker_->busy(); }

@@ -16,6 +16,7 @@
 namespace omnitune {
 
 struct PipelineRun {
+    quint64 sourceTag = 0;    // the request's tag: tells runs of a source opened before apart
     int frameIndex = -1;
     cv::Mat frame;            // the frame that was processed (BGR or UYVY)
     PixelFormat format = PixelFormat::Bgr8;
@@ -38,7 +39,10 @@ public:
     // belongs to the worker (FrameSource is single-threaded); the window keeps only the
     // pointer to pass back. `configGeneration` changes whenever the config does; the worker
     // rebuilds its pipeline (LUT, tables) only then.
-    void request(std::shared_ptr<FrameSource> source, int frameIndex, const Config& config, quint64 configGeneration);
+    // `sourceTag` comes back in the run, so runs still in flight when another source is
+    // opened can be told apart and dropped.
+    void request(std::shared_ptr<FrameSource> source, quint64 sourceTag, int frameIndex, const Config& config,
+                 quint64 configGeneration);
     bool isBusy() const;
 
 signals:

@@ -5,6 +5,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QSet>
 
 namespace omnitune {
 
@@ -43,7 +44,7 @@ void TruthDocument::close(const QString& why)
     closedReason_ = why.isEmpty() ? tr("ground truth is kept in a session folder's truth.csv: open a session to mark it") : why;
     path_.clear();
     rows_.clear();
-    backedUp_ = false;
+    unsaved_ = false;
     emit changed(-1);
 }
 
@@ -71,10 +72,16 @@ std::optional<QString> TruthDocument::remove(int frame)
 
 std::optional<QString> TruthDocument::save()
 {
-    const bool keepBackup = !backedUp_ && QFile::exists(path_);
-    if (const auto err = writeFileAtomically(path_.toStdString(), serializeTruthCsv(rows_), keepBackup))
-        return QString::fromStdString(*err);
-    backedUp_ = true;
+    if (!isOpen()) return std::nullopt;
+    // Files backed up in this run of the program: a reopened session keeps its first backup.
+    static QSet<QString> backedUp;
+    const bool keepBackup = !backedUp.contains(path_) && QFile::exists(path_);
+    if (const auto err = writeFileAtomically(path_.toStdString(), serializeTruthCsv(rows_), keepBackup)) {
+        unsaved_ = true;
+        return tr("%1 (the marks are kept in memory; the next mark tries again)").arg(QString::fromStdString(*err));
+    }
+    backedUp.insert(path_);
+    unsaved_ = false;
     return std::nullopt;
 }
 

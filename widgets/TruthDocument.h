@@ -1,8 +1,8 @@
 #pragma once
 // The ground truth of the open session (its truth.csv) while someone marks it in the window.
 // Every change is written at once, atomically, so a crash or a closed laptop loses no mark;
-// the file as it was before this marking session is kept as truth.csv.bak (written on the
-// first change only, so later saves never overwrite the original).
+// the file as it was when the program first opened it is kept as truth.csv.bak (written on
+// the first change only, so later saves, and reopening the session, never overwrite it).
 #include "TruthCsv.h"
 
 #include <QObject>
@@ -36,16 +36,17 @@ public:
     // memory (and saved with the next change) and the message names the file and the fault.
     std::optional<QString> set(const TruthRow& row);
     std::optional<QString> remove(int frame);
+    // Marks a failed save kept only in memory; save() tries again.
+    bool hasUnsavedMarks() const { return unsaved_; }
+    std::optional<QString> save();
 
 signals:
     void changed(int frame);  // -1: everything (opened or closed)
 
 private:
-    std::optional<QString> save();
-
     QString path_;
     std::map<int, TruthRow> rows_;
-    bool backedUp_ = false;
+    bool unsaved_ = false;
     QString closedReason_;
 };
 

@@ -47,10 +47,21 @@ void TruthMarker::setMarking(bool on)
 
 bool TruthMarker::runIsCurrent() const { return run_ && run_->frameIndex == frame_ && run_->error.isEmpty() && run_->result.ok(); }
 
+std::optional<QString> TruthMarker::notOnScreen() const
+{
+    // Marks are made on what the panes show: until frame_'s run arrives they show another
+    // frame (the one before, or the last readable one), and a quick click would land there.
+    if (runIsCurrent()) return std::nullopt;
+    return tr("frame %1 is not on screen yet (still processing, or unreadable): mark it once it shows").arg(frame_);
+}
+
 std::optional<QString> TruthMarker::markBall(QPointF centre, double radius)
 {
-    if (!run_) return tr("no frame processed yet");
+    if (const auto why = notOnScreen()) return why;
     const Config& c = run_->config;
+    const cv::Mat& image = run_->frame;
+    if (centre.x() < 0 || centre.y() < 0 || centre.x() >= image.cols || centre.y() >= image.rows)
+        return tr("the ball's centre must lie inside the image");
     const double distancePx = std::hypot(centre.x() - c.geometry.centerX, centre.y() - c.geometry.centerY);
     if (radius <= 0) radius = BallModel(c.ball).radiusAt(distancePx);
     TruthRow row;
@@ -71,7 +82,7 @@ std::optional<QString> TruthMarker::markBall(QPointF centre, double radius)
 
 std::optional<QString> TruthMarker::acceptDetection()
 {
-    if (!runIsCurrent()) return tr("frame %1 is still being processed (or failed): nothing to accept yet").arg(frame_);
+    if (const auto why = notOnScreen()) return why;
     const BallDetection& d = run_->result.detection;
     if (!d.found) return markNoBall();
     TruthRow row;
@@ -87,6 +98,7 @@ std::optional<QString> TruthMarker::acceptDetection()
 
 std::optional<QString> TruthMarker::markNoBall()
 {
+    if (const auto why = notOnScreen()) return why;
     TruthRow row;
     row.frame = frame_;
     row.ballVisible = false;

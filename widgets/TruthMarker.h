@@ -68,6 +68,7 @@ private:
     std::optional<QString> commit(TruthRow row);
     void refresh();
     bool runIsCurrent() const;
+    std::optional<QString> notOnScreen() const;
 
     TruthDocument* truth_;
     PipelineView* view_;
