@@ -159,6 +159,7 @@ void CandidateModelTest::failingCellRed_data()
     QTest::newRow("non-black") << RejectReason::NonBlack << int(Col::NonBlackColumn);
     QTest::newRow("too far") << RejectReason::TooSmall << int(Col::RadiusColumn);
     QTest::newRow("radius too large") << RejectReason::RadiusTooLarge << int(Col::RadiusColumn);
+    QTest::newRow("runs on") << RejectReason::RunsOn << int(Col::RunOnColumn);
     QTest::newRow("valid, not chosen") << RejectReason::NotChosen << -1;
 }
 

@@ -45,7 +45,7 @@ void CandidateTableModel::setThresholds(const Config& config)
 {
     const ValidationOptions& v = config.validation;
     thresholds_ = Thresholds{v.minNonGreenPct, v.minNonBlackPct, v.minCircularityPct, v.radiusTolerance, v.minRadiusPx,
-                             config.hough.minAccumulator, config.opencvHough.maxRadiusRatio};
+                             config.hough.minAccumulator, config.opencvHough.maxRadiusRatio, v.maxRunOnPct};
     emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
     if (!candidates_.empty()) emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1), {Qt::ToolTipRole});
 }
@@ -71,7 +71,7 @@ int CandidateTableModel::failingColumn(RejectReason reason)
     case RejectReason::NonGreen: return NonGreenColumn;
     case RejectReason::NonBlack: return NonBlackColumn;
     case RejectReason::Circularity: return CircularityColumn;
-    case RejectReason::RunsOn: return ResultColumn;
+    case RejectReason::RunsOn: return RunOnColumn;
     case RejectReason::None:
     case RejectReason::OutsideArea:
     case RejectReason::NotChosen: return -1;
@@ -133,6 +133,7 @@ QVariant CandidateTableModel::display(const BallCandidate& c, int column) const
     case NonGreenColumn: return number(c.scores.nonGreenPct, 1);
     case NonBlackColumn: return number(c.scores.nonBlackPct, 1);
     case CircularityColumn: return number(c.scores.circularityPct, 1);
+    case RunOnColumn: return number(c.scores.runOnPct, 1);
     case ResultColumn: return QString::fromUtf8(rejectReasonName(c.rejected).data(), int(rejectReasonName(c.rejected).size()));
     }
     return {};
@@ -152,6 +153,7 @@ QVariant CandidateTableModel::sortValue(const BallCandidate& c, int column) cons
     case NonGreenColumn: return c.scores.nonGreenPct;
     case NonBlackColumn: return c.scores.nonBlackPct;
     case CircularityColumn: return c.scores.circularityPct;
+    case RunOnColumn: return c.scores.runOnPct;
     }
     return {};
 }
@@ -173,6 +175,7 @@ QVariant CandidateTableModel::headerData(int section, Qt::Orientation orientatio
     case NonGreenColumn: return tr("non-green");
     case NonBlackColumn: return tr("non-black");
     case CircularityColumn: return tr("circ. %");
+    case RunOnColumn: return tr("run-on %");
     case ResultColumn: return tr("Result");
     }
     return {};
@@ -211,9 +214,14 @@ QString CandidateTableModel::columnToolTip(int column) const
                   "(validation.radius_tolerance); a ball needs at least %2 % (validation.min_circularity_pct). "
                   "Lines, corners and feet fail it.")
             .arg(number(t.radiusTolerance * 100.0, 0), number(t.minCircularityPct, 1));
+    case RunOnColumn:
+        return tr("Share of the rays along which the centre's colour runs on without a break beyond the circle; at most "
+                  "%1 % (validation.max_run_on_pct). A ball has carpet just outside its border; line corners fail it.")
+            .arg(number(t.maxRunOnPct, 1));
     case ResultColumn:
-        return tr("\"accepted\", or the first test that rejected the candidate (thesis order: non-green, non-black, "
-                  "circularity); \"valid, not chosen\": it passed, but another candidate scored higher.");
+        return tr("\"accepted\", or the first test that rejected the candidate: too far to validate, then the thesis' "
+                  "non-green, non-black, circularity, then run-on; \"valid, not chosen\": it passed, but another "
+                  "candidate scored higher.");
     }
     return {};
 }
@@ -238,6 +246,9 @@ QString CandidateTableModel::cellToolTip(const BallCandidate& c, int column) con
         break;
     case RejectReason::TooSmall:
         why = tr("expected radius %1 px is below %2 px").arg(number(c.expectedRadiusPx, 1), number(t.minRadiusPx, 1));
+        break;
+    case RejectReason::RunsOn:
+        why = tr("%1 % is above %2 %").arg(number(c.scores.runOnPct, 1), number(t.maxRunOnPct, 1));
         break;
     case RejectReason::RadiusTooLarge:
         why = tr("radius %1 px is above %2 x %3 px expected")

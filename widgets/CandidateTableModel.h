@@ -28,6 +28,7 @@ public:
         NonGreenColumn,
         NonBlackColumn,
         CircularityColumn,
+        RunOnColumn,
         ResultColumn,
         ColumnCount
     };
@@ -64,6 +65,7 @@ private:
         double minRadiusPx;
         int minAccumulator;
         double maxRadiusRatio;
+        double maxRunOnPct;
     };
 
     QVariant display(const BallCandidate& c, int column) const;
