@@ -451,8 +451,7 @@ void MainWindow::onSessionSweepFinished(std::shared_ptr<const SweepResult> resul
     nav_->setMarks(marks, sweepMarkKinds());
     if (sweepDialog_->isOutdated()) nav_->setMarksOutdated(sweepMarkKinds());
     statusBar()->showMessage(tr("Whole session: a ball in %1 of %2 frames, %3 changed")
-                                 .arg(std::count_if(result->current.begin(), result->current.end(),
-                                                    [](const FrameOutcome& o) { return o.detection.found; }))
+                                 .arg(detectionCount(result->current))
                                  .arg(result->visited)
                                  .arg(result->comparison.changed()),
                              8000);

@@ -78,7 +78,7 @@ int main(int argc, char** argv)
                 runBatch(source, pipeline,
                          [&](int index, const Frame*, const PipelineResult& r) {
                              if (!r.ok()) std::cerr << "frame " << index << " skipped: " << r.error << "\n";
-                             outcomes.push_back({index, r.ok(), r.detection, r.timings.totalMs});
+                             outcomes.push_back(outcomeOf(index, r));
                          },
                          &progress);
             } catch (const std::exception& e) {

@@ -10,6 +10,17 @@
 
 namespace omnitune {
 
+FrameOutcome outcomeOf(int frame, const PipelineResult& result)
+{
+    return {frame, result.ok(), result.detection, result.timings.totalMs};
+}
+
+int detectionCount(const std::vector<FrameOutcome>& outcomes)
+{
+    return int(std::count_if(outcomes.begin(), outcomes.end(),
+                             [](const FrameOutcome& o) { return o.processed && o.detection.found; }));
+}
+
 namespace {
 
 struct Moments {

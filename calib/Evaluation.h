@@ -18,6 +18,11 @@ struct FrameOutcome {
     double timeMs = 0.0;
 };
 
+// What evaluate() needs of one pipeline result.
+FrameOutcome outcomeOf(int frame, const PipelineResult& result);
+// Processed frames with a detection, truth or not.
+int detectionCount(const std::vector<FrameOutcome>& outcomes);
+
 struct EvaluationOptions {
     double maxErrorM = 0.5;  // a detection farther than this from the truth is a false positive
 };

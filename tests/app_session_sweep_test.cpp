@@ -46,7 +46,7 @@ EvaluationRow batchEvaluation(const QString& session, const Config& config)
     Pipeline pipeline(config);
     std::vector<FrameOutcome> outcomes;
     runBatch(source, pipeline, [&](int i, const Frame*, const PipelineResult& r) {
-        outcomes.push_back({i, r.ok(), r.detection, r.timings.totalMs});
+        outcomes.push_back(outcomeOf(i, r));
     });
     return evaluate(outcomes, opened.reader->truth());
 }

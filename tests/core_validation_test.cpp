@@ -11,6 +11,17 @@ Q_DECLARE_METATYPE(omnitune::RejectReason)
 
 namespace {
 
+// "rejected by runs on (scores 100 / 100 / 92, run-on 40)": for failure messages.
+QString verdict(const BallCandidate& c)
+{
+    return QString("rejected by %1 (scores %2 / %3 / %4, run-on %5)")
+        .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
+        .arg(c.scores.nonGreenPct)
+        .arg(c.scores.nonBlackPct)
+        .arg(c.scores.circularityPct)
+        .arg(c.scores.runOnPct);
+}
+
 // A candidate at distance/angle validated against a frame built by `draw`.
 template <class Draw>
 BallCandidate validateAt(double distance, double angle, Draw draw)
@@ -137,12 +148,7 @@ private slots:
             cv::line(f, p, p + cv::Point(52, 30), kWhite, ri);
         });
         QVERIFY2(c.rejected == RejectReason::RunsOn,
-                 qPrintable(QString("rejected by %1 (scores %2 / %3 / %4, run-on %5)")
-                                .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
-                                .arg(c.scores.nonGreenPct)
-                                .arg(c.scores.nonBlackPct)
-                                .arg(c.scores.circularityPct)
-                                .arg(c.scores.runOnPct)));
+                 qPrintable(verdict(c)));
         QVERIFY(c.scores.runOnPct > Config{}.validation.maxRunOnPct);
     }
 
@@ -163,12 +169,7 @@ private slots:
             cv::circle(f, p, ri, kOrange, cv::FILLED);
         });
         QVERIFY2(c.rejected == RejectReason::None,
-                 qPrintable(QString("rejected by %1 (scores %2 / %3 / %4, run-on %5)")
-                                .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
-                                .arg(c.scores.nonGreenPct)
-                                .arg(c.scores.nonBlackPct)
-                                .arg(c.scores.circularityPct)
-                                .arg(c.scores.runOnPct)));
+                 qPrintable(verdict(c)));
         QCOMPARE(c.scores.runOnPct, 0.0);
     }
 

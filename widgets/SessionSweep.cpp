@@ -40,11 +40,6 @@ bool sameDetector(const Config& a, const Config& b)
     return a.mask.size() == b.mask.size() && a.mask.type() == b.mask.type() && cv::norm(a.mask, b.mask, cv::NORM_INF) == 0;
 }
 
-FrameOutcome outcomeOf(int index, const PipelineResult& r)
-{
-    return {index, r.ok(), r.detection, r.timings.totalMs};
-}
-
 // The saved config's pipeline, or why there is none.
 struct SavedPipeline {
     std::unique_ptr<Pipeline> pipeline;

@@ -23,12 +23,6 @@ enum Row { FramesRow, FoundRow, RatioRow, FalsePositiveRow, TimeRow, RowCount };
 
 QString pct(double value) { return QStringLiteral("%1 %").arg(value, 0, 'f', 1); }
 
-int foundCount(const std::vector<FrameOutcome>& outcomes)
-{
-    return int(std::count_if(outcomes.begin(), outcomes.end(),
-                             [](const FrameOutcome& o) { return o.processed && o.detection.found; }));
-}
-
 // Short cells: two columns of them must fit a dialog beside the window.
 QString framesCell(const EvaluationRow& row)
 {
@@ -37,7 +31,7 @@ QString framesCell(const EvaluationRow& row)
 
 QString foundCell(const std::vector<FrameOutcome>& outcomes, const EvaluationRow& row)
 {
-    const int found = foundCount(outcomes);
+    const int found = detectionCount(outcomes);
     return QObject::tr("%1 (%2)").arg(found).arg(pct(row.frames ? 100.0 * found / row.frames : 0.0));
 }
 
@@ -305,7 +299,7 @@ void SessionSweepDialog::fillChanges(const SweepResult& r)
     const SessionComparison& c = r.comparison;
     const bool compare = r.hasSaved && !r.savedIsCurrent;
     if (!compare) {
-        changes_->setText(tr("The slider marks the %1 frames with a ball (below the groove).").arg(foundCount(r.current)));
+        changes_->setText(tr("The slider marks the %1 frames with a ball (below the groove).").arg(detectionCount(r.current)));
     } else if (c.changed() == 0) {
         changes_->setText(tr("No frame changed against the saved config."));
     } else {
