@@ -63,6 +63,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     statusBar()->addWidget(pixelLabel_, 1);
     statusBar()->addPermanentWidget(timingLabel_);
+    timingLabel_->setToolTip(tr("Time per stage of this frame, ms: segmentation, binary image, Canny edges, Hough, validation; total and the running average over about 100 frames"));
 
     connect(nav_, &FrameNavigator::frameRequested, this, &MainWindow::showFrame);
     connect(&runner_, &PipelineRunner::finished, this, &MainWindow::onRunFinished);
@@ -323,7 +324,8 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
     const StageTimings& t = run->result.timings;
     averageMs_ = (averageMs_ * averaged_ + t.totalMs) / (averaged_ + 1);
     averaged_ = std::min(averaged_ + 1, 99);  // a running average over about the last 100 frames
-    timingLabel_->setText(tr("segment %1 | binary %2 | edges %3 | Hough %4 | validation %5 | total %6 ms (avg %7)")
+    // Short: the pixel inspector shares the status bar.
+    timingLabel_->setText(tr("ms: seg %1 | bin %2 | edges %3 | Hough %4 | valid. %5 | total %6 (avg %7)")
                               .arg(t.segmentMs, 0, 'f', 1).arg(t.binaryMs, 0, 'f', 1).arg(t.edgesMs, 0, 'f', 1)
                               .arg(t.houghMs, 0, 'f', 1).arg(t.validationMs, 0, 'f', 1).arg(t.totalMs, 0, 'f', 1)
                               .arg(averageMs_, 0, 'f', 1));

@@ -147,9 +147,9 @@ std::vector<ConfigKey> buildSchema()
                           [](auto& c) -> auto& { return c.ball.squareRatio; }));
 
     // edges
-    s.push_back(intKey("edges.canny_low", "|dx|+|dy|", 0, 1020, true, "Canny low threshold: edges grow along pixels above it; lower: noisier, broken lines join",
+    s.push_back(intKey("edges.canny_low", "gradient", 0, 1020, true, "Canny low threshold on the L1 gradient |dx|+|dy|: edges grow along pixels above it; lower: noisier, broken lines join",
                        [](auto& c) -> auto& { return c.edges.cannyLow; }));
-    s.push_back(intKey("edges.canny_high", "|dx|+|dy|", 0, 1020, true, "Canny high threshold: edges start above it; higher: faint ball borders vanish",
+    s.push_back(intKey("edges.canny_high", "gradient", 0, 1020, true, "Canny high threshold on the L1 gradient |dx|+|dy|: edges start above it; higher: faint ball borders vanish",
                        [](auto& c) -> auto& { return c.edges.cannyHigh; }));
 
     // specific Hough

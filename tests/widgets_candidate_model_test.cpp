@@ -185,7 +185,7 @@ void CandidateModelTest::headerAndTooltips()
 {
     CandidateTableModel model;
     model.setResult(twoCandidates());
-    QCOMPARE(model.headerData(Col::CircularityColumn, Qt::Horizontal).toString(), QStringLiteral("circ. %"));
+    QCOMPARE(model.headerData(Col::CircularityColumn, Qt::Horizontal).toString(), QStringLiteral("circ.\n%"));
     QCOMPARE(model.headerData(Col::ResultColumn, Qt::Horizontal).toString(), QStringLiteral("Result"));
     QStringList headers;
     for (int col = 0; col < model.columnCount(); ++col) {

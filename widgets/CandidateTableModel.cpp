@@ -169,13 +169,14 @@ QVariant CandidateTableModel::headerData(int section, Qt::Orientation orientatio
     case SourceColumn: return tr("Source");
     case XColumn: return tr("x");
     case YColumn: return tr("y");
-    case RadiusColumn: return tr("r (px)");
+    // Two-line headers: the scores and the verdict must fit the narrow cell beside the panes.
+    case RadiusColumn: return tr("r\n(px)");
     case DistanceColumn: return tr("Distance (px)");
     case AccumulatorColumn: return tr("Accumulator");
-    case NonGreenColumn: return tr("non-green");
-    case NonBlackColumn: return tr("non-black");
-    case CircularityColumn: return tr("circ. %");
-    case RunOnColumn: return tr("run-on %");
+    case NonGreenColumn: return tr("non-\ngreen %");
+    case NonBlackColumn: return tr("non-\nblack %");
+    case CircularityColumn: return tr("circ.\n%");
+    case RunOnColumn: return tr("run-\non %");
     case ResultColumn: return tr("Result");
     }
     return {};

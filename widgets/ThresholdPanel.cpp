@@ -51,6 +51,8 @@ bool inSection(const ConfigKey& k, const char* section)
 // in the tooltip.
 QString rowLabel(const ConfigKey& k)
 {
+    // Named after what it limits: "Min radius" is already the OpenCV circles' row.
+    if (k.path == "validation.min_radius_px") return ThresholdPanel::tr("Min expected radius (px)");
     QStringList words = qs(k.path.substr(k.path.find('.') + 1)).split(QLatin1Char('_'));
     if (words.size() > 1 && ((k.unit == "%" && words.last() == QLatin1String("pct")) ||
                              (k.unit == "px" && words.last() == QLatin1String("px"))))
@@ -61,7 +63,7 @@ QString rowLabel(const ConfigKey& k)
         .replace(QLatin1String("acc "), QLatin1String("accumulator "));
     if (text != QLatin1String("dp")) text[0] = text[0].toUpper();
     text = text.toHtmlEscaped();
-    // The unit wraps as a whole: "(|dx|+|dy|)" split after a bar reads as nonsense. Qt's rich
+    // The unit wraps as a whole: "(fraction)" or "(votes)" split inside reads as nonsense. Qt's rich
     // text has no inline nowrap, so word joiners (U+2060) forbid the breaks.
     if (!k.unit.empty()) {
         QString unit = QStringLiteral("(%1)").arg(qs(k.unit));
