@@ -227,6 +227,7 @@ private slots:
         QVERIFY2(text.contains(QString("%1 vanished").arg(r->comparison.vanished)), qPrintable(text));
         QVERIFY2(text.contains("False positives") && !text.contains("no truth.csv"), qPrintable(text));
         QVERIFY2(text.contains("Detection ratio"), qPrintable(text));
+        QVERIFY2(text.contains("Compared with " + window.document()->path()), qPrintable(text));
 
         // The tooltip names the marks of the frame under the cursor and explains the colours.
         const int firstVanished = slider->marks(FrameMarkKind::Vanished).front().frame;

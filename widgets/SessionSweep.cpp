@@ -140,6 +140,7 @@ void SessionSweep::run()
 void SessionSweep::sweep(SweepResult& result)
 {
     result.sourcePath = request_.sourcePath;
+    result.savedConfigPath = request_.savedConfigPath;
     result.hasTruth = !request_.truth.empty();
     SourceOpen<FrameSource> opened = openFrameSource(request_.sourcePath.toStdString());
     if (!opened.ok()) {

@@ -33,6 +33,7 @@ struct SweepRequest {
 
 struct SweepResult {
     QString sourcePath;
+    QString savedConfigPath;   // the file the saved column comes from
     QString error;             // nothing ran (the source or the current config is unusable)
     int total = 0;             // frames in the source; -1 when the source does not know
     int visited = 0;           // frames visited (all of them unless cancelled)

@@ -270,6 +270,9 @@ void SessionSweepDialog::fillTable(const SweepResult& r)
     table_->clearSpans();
     const bool compare = r.hasSaved && !r.savedIsCurrent;
     table_->setColumnHidden(1, !compare);
+    auto* savedHeader = new QTableWidgetItem(tr("Saved: %1").arg(QFileInfo(r.savedConfigPath).fileName()));
+    savedHeader->setToolTip(r.savedConfigPath);  // which file, when several configs are about
+    table_->setHorizontalHeaderItem(1, savedHeader);
     auto set = [this](int row, int column, const QString& text) { table_->setItem(row, column, new QTableWidgetItem(text)); };
     const std::pair<const std::vector<FrameOutcome>*, const EvaluationRow*> columns[] = {{&r.current, &r.currentRow},
                                                                                        {&r.saved, &r.savedRow}};
@@ -347,6 +350,7 @@ QString SessionSweepDialog::summaryText() const
     if (note_->isVisible() || (!note_->text().isEmpty() && result_)) lines << note_->text();
     if (result_ && result_->ok()) {
         const bool compare = !table_->isColumnHidden(1);
+        if (compare) lines << tr("Compared with %1").arg(table_->horizontalHeaderItem(1)->toolTip());
         for (int row = 0; row < RowCount; ++row) {
             if (table_->isRowHidden(row)) continue;
             QString line = table_->verticalHeaderItem(row)->text() + ": " + table_->item(row, 0)->text();
