@@ -824,6 +824,28 @@ private slots:
         QVERIFY2(check.err.isEmpty(), qPrintable(check.describe()));
     }
 
+    void configUpgradeAddsMissingKeys()
+    {
+        const Run defaults = runTool(kConfig, {"--defaults"});
+        QVERIFY2(defaults.exitedWith(0), qPrintable(defaults.describe()));
+        QByteArray old = defaults.out;
+        const int key = old.indexOf("max_run_on_pct:");
+        QVERIFY(key > 0);
+        const int comment = old.lastIndexOf('\n', old.lastIndexOf('\n', key) - 1) + 1;  // the line above is its comment
+        old.remove(comment, old.indexOf('\n', key) - comment + 1);  // a config from before the key existed
+        const QString file = path("old.yml");
+        QVERIFY(writeBytes(file, old));
+
+        const Run upgrade = runTool(kConfig, {"--upgrade", file});
+        QVERIFY2(upgrade.exitedWith(0), qPrintable(upgrade.describe()));
+        QVERIFY2(upgrade.err.contains("validation.max_run_on_pct"), qPrintable(upgrade.describe()));
+        QFile backup(file + ".bak");
+        QVERIFY(backup.open(QIODevice::ReadOnly));
+        QCOMPARE(backup.readAll(), old);
+        const Run check = runTool(kConfig, {"--check", file});
+        QVERIFY2(check.exitedWith(0) && check.out.contains("OK (0 warning(s))"), qPrintable(check.describe()));
+    }
+
     void configUsage()
     {
         const Run r = runTool(kConfig, {});
