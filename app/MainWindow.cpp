@@ -339,7 +339,7 @@ bool MainWindow::saveConfig()
         QMessageBox::critical(this, tr("Cannot save the config"), *err);
         return false;
     }
-    statusBar()->showMessage(tr("Saved %1 (previous version kept as .bak)").arg(doc_.path()), 5000);
+    statusBar()->showMessage(tr("Saved %1 (the file as it was before your first save is kept as .bak)").arg(doc_.path()), 5000);
     return true;
 }
 

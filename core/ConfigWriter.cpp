@@ -131,7 +131,7 @@ std::optional<std::string> writeFileAtomically(const std::string& path, const st
     return replaceWithTemp(path, keepBackup);
 }
 
-std::optional<ConfigIssue> saveConfig(const Config& config, const std::string& path)
+std::optional<ConfigIssue> saveConfig(const Config& config, const std::string& path, bool keepBackup)
 {
     const auto problems = checkConfig(config, path);
     if (!problems.empty()) return problems.front();
@@ -154,12 +154,12 @@ std::optional<ConfigIssue> saveConfig(const Config& config, const std::string& p
         return ConfigIssue{ConfigIssueKind::WriteError, path, 0, "", *err};
     }
     if (!maskPath.empty()) {
-        if (auto err = replaceWithTemp(maskPath, true)) {
+        if (auto err = replaceWithTemp(maskPath, keepBackup)) {
             ::unlink((path + ".tmp").c_str());
             return ConfigIssue{ConfigIssueKind::WriteError, maskPath, 0, "geometry.mask_file", *err};
         }
     }
-    if (auto err = replaceWithTemp(path, true)) return ConfigIssue{ConfigIssueKind::WriteError, path, 0, "", *err};
+    if (auto err = replaceWithTemp(path, keepBackup)) return ConfigIssue{ConfigIssueKind::WriteError, path, 0, "", *err};
     return std::nullopt;
 }
 

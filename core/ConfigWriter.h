@@ -14,7 +14,8 @@ std::string serializeConfig(const Config& config);
 // and renames the new one over `path`. Writes config.mask to geometry.mask_file (relative to
 // the config's folder) the same way. The config is checked first; nothing is written when
 // it is not valid. Returns the fault, or nothing on success.
-std::optional<ConfigIssue> saveConfig(const Config& config, const std::string& path);
+// `keepBackup`: the previous config (and mask) are kept as .bak files first.
+std::optional<ConfigIssue> saveConfig(const Config& config, const std::string& path, bool keepBackup = true);
 
 // Writes `bytes` to `path` atomically (temp file, flush, rename), with a `path`.bak of the
 // previous file when `keepBackup`; on failure returns a message and leaves `path` as it was.

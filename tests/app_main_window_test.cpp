@@ -112,7 +112,8 @@ private slots:
         for (const auto& c : window_->lastRun()->result.candidates)
             if (c.source == CandidateSource::SpecificHough) QCOMPARE(c.rejected, RejectReason::TooSmall);
 
-        window_->document()->undoStack()->undo();
+        QVERIFY(editor->hasFocus());
+        QTest::keyClick(editor, Qt::Key_Z, Qt::ControlModifier);  // the config's undo, though the field has the cursor
         QCOMPARE(window_->document()->config().validation.minRadiusPx, 4.0);
         QTRY_VERIFY(!window_->isProcessing() && window_->lastRun()->result.detection.found);
         QVERIFY(!window_->document()->isDirty());
@@ -125,9 +126,17 @@ private slots:
         QVERIFY(window_->saveConfig());
         QVERIFY(!window_->document()->isDirty());
         QVERIFY(QFile::exists(session_ + "/config.yml.bak"));
+        QFile original(QStringLiteral(OMNITUNE_SOURCE_DIR "/sessions/demo/config.yml"));
+        QVERIFY(original.open(QIODevice::ReadOnly));
+        const QByteArray before = original.readAll();
+        QVERIFY(!window_->document()->setValue("edges.canny_low", ConfigValue(50)));
+        QVERIFY(window_->saveConfig());  // a second save keeps the first backup: the file as it was
+        QFile backup(session_ + "/config.yml.bak");
+        QVERIFY(backup.open(QIODevice::ReadOnly));
+        QCOMPARE(backup.readAll(), before);
         const ConfigLoad reloaded = loadConfig((session_ + "/config.yml").toStdString());
         QVERIFY(reloaded.ok());
-        QCOMPARE(reloaded.config.edges.cannyLow, 55);
+        QCOMPARE(reloaded.config.edges.cannyLow, 50);
     }
 
     void brokenConfigIsRefusedWithTheKey()

@@ -1,5 +1,6 @@
 #include "ConfigDocument.h"
 
+#include "BackupOnce.h"
 #include "ConfigParser.h"
 #include "ConfigWriter.h"
 
@@ -84,14 +85,18 @@ std::optional<QString> ConfigDocument::load(const QString& path, QStringList* wa
 std::optional<QString> ConfigDocument::save()
 {
     if (path_.isEmpty()) return QStringLiteral("the config has no file yet: use Save As");
-    if (const auto err = saveConfig(config_, path_.toStdString())) return QString::fromStdString(err->toString());
+    if (const auto err = saveConfig(config_, path_.toStdString(), !backedUpThisRun(path_)))
+        return QString::fromStdString(err->toString());
+    rememberBackup(path_);
     undo_.setClean();
     return std::nullopt;
 }
 
 std::optional<QString> ConfigDocument::saveAs(const QString& path)
 {
-    if (const auto err = saveConfig(config_, path.toStdString())) return QString::fromStdString(err->toString());
+    if (const auto err = saveConfig(config_, path.toStdString(), !backedUpThisRun(path)))
+        return QString::fromStdString(err->toString());
+    rememberBackup(path);
     if (path != path_) {
         path_ = path;
         emit pathChanged(path_);

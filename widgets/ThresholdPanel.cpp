@@ -8,6 +8,7 @@
 #include <QEvent>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
@@ -325,11 +326,9 @@ void ThresholdPanel::addEditor(const ConfigKey& k, QFormLayout* form)
     }
     editor->setObjectName(key);
     editor->setToolTip(tooltipFor(k));
-    if (qobject_cast<QAbstractSpinBox*>(editor) || qobject_cast<QComboBox*>(editor)) {
-        // A wheel turned to scroll the panel must not change a threshold under the pointer.
+    editor->installEventFilter(this);  // undo keys (all editors), wheel (spin and combo boxes)
+    if (qobject_cast<QAbstractSpinBox*>(editor) || qobject_cast<QComboBox*>(editor))
         editor->setFocusPolicy(Qt::StrongFocus);
-        editor->installEventFilter(this);
-    }
     auto* label = new QLabel(rowLabel(k));
     label->setTextFormat(Qt::RichText);
     label->setToolTip(editor->toolTip());
@@ -341,7 +340,14 @@ void ThresholdPanel::addEditor(const ConfigKey& k, QFormLayout* form)
 
 bool ThresholdPanel::eventFilter(QObject* watched, QEvent* event)
 {
-    if (event->type() == QEvent::Wheel) {
+    if (event->type() == QEvent::ShortcutOverride) {
+        // Ctrl+Z / Ctrl+Shift+Z undo and redo the config, also with the cursor still in the
+        // field just edited: a value applies on Return, so the field's own text undo would
+        // only swallow the key (newcomers pressed it twice and saw nothing happen).
+        const auto* key = static_cast<QKeyEvent*>(event);
+        if (key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo)) return true;
+    }
+    if (event->type() == QEvent::Wheel && (qobject_cast<QAbstractSpinBox*>(watched) || qobject_cast<QComboBox*>(watched))) {
         auto* w = qobject_cast<QWidget*>(watched);
         if (w && !w->hasFocus()) {
             event->ignore();  // goes on to the scroll area

@@ -1,11 +1,11 @@
 #include "TruthDocument.h"
 
+#include "BackupOnce.h"
 #include "ConfigWriter.h"
 #include "Session.h"
 
 #include <QDir>
 #include <QFile>
-#include <QSet>
 
 namespace omnitune {
 
@@ -73,14 +73,12 @@ std::optional<QString> TruthDocument::remove(int frame)
 std::optional<QString> TruthDocument::save()
 {
     if (!isOpen()) return std::nullopt;
-    // Files backed up in this run of the program: a reopened session keeps its first backup.
-    static QSet<QString> backedUp;
-    const bool keepBackup = !backedUp.contains(path_) && QFile::exists(path_);
+    const bool keepBackup = !backedUpThisRun(path_);  // a reopened session keeps its first backup
     if (const auto err = writeFileAtomically(path_.toStdString(), serializeTruthCsv(rows_), keepBackup)) {
         unsaved_ = true;
         return tr("%1 (the marks are kept in memory; the next mark tries again)").arg(QString::fromStdString(*err));
     }
-    backedUp.insert(path_);
+    rememberBackup(path_);
     unsaved_ = false;
     return std::nullopt;
 }
