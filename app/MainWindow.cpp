@@ -47,7 +47,9 @@ MainWindow::MainWindow(QWidget* parent)
     resultRow->addWidget(resultLabel_, 1);
     truthLabel_->setObjectName("truth");
     truthLabel_->setStyleSheet("color: #c030c0");  // the truth overlay's colour
-    resultRow->addWidget(truthLabel_);
+    truthLabel_->setWordWrap(true);  // the marking banner must never widen the window
+    resultLabel_->setWordWrap(true);
+    resultRow->addWidget(truthLabel_, 1);
     layout->addLayout(resultRow);
     layout->addWidget(nav_);
     setCentralWidget(central);
@@ -87,7 +89,12 @@ MainWindow::MainWindow(QWidget* parent)
     });
     connect(marker_, &TruthMarker::frameRequested, nav_, &FrameNavigator::goTo);
     connect(marker_, &TruthMarker::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
-    connect(marker_, &TruthMarker::described, truthLabel_, &QLabel::setText);
+    connect(marker_, &TruthMarker::described, this, [this](const QString& text) {
+        truthLabel_->setText(text);
+        // Marking mode changes what the left button does: it must be impossible to miss.
+        truthLabel_->setStyleSheet(marker_->isMarking() ? "color: white; background: #a020a0; padding: 2px"
+                                                        : "color: #c030c0");
+    });
     connect(&truth_, &TruthDocument::changed, this, [this](int frame) {
         if (frame >= 0) {
             nav_->setMark(frame, FrameMarkKind::Truth, truth_.row(frame) != nullptr);
@@ -149,6 +156,11 @@ void MainWindow::buildMenus()
                                                     : view_->transform()->center();
         view_->transform()->setZoom(1.0, c);
     }, QKeySequence(Qt::Key_1));
+    if (auto* dock = findChild<QDockWidget*>("thresholds")) {
+        QAction* panel = dock->toggleViewAction();  // a closed panel comes back from here
+        panel->setText(tr("&Thresholds panel"));
+        view->addAction(panel);
+    }
     view->addSeparator();
     OverlayOptions& o = view_->overlays();
     const std::pair<QString, bool*> toggles[] = {

@@ -15,6 +15,7 @@
 #include "WindowTestSupport.h"
 
 #include <QLabel>
+#include <QStatusBar>
 #include <QtTest>
 
 using namespace omnitune;
@@ -80,10 +81,14 @@ private slots:
         QTest::keyClick(window_.get(), Qt::Key_U);
         QVERIFY(window_->truth()->row(0));
         QCOMPARE(window_->navigator()->current(), 0);
+        auto* banner = window_->findChild<QLabel*>("truth");
+        QVERIFY(!banner->text().contains("MARKING"));
         QTest::keyClick(window_.get(), Qt::Key_T);
         QVERIFY(window_->truthMarker()->isMarking());
+        QVERIFY(banner->text().contains("MARKING TRUTH"));  // the mode cannot be missed
         QTest::keyClick(window_.get(), Qt::Key_T);
         QVERIFY(!window_->truthMarker()->isMarking());
+        QVERIFY(!banner->text().contains("MARKING"));
     }
 
     void keysMarkAndAdvance()
@@ -98,6 +103,8 @@ private slots:
         QVERIFY(waitForFrame(*window_, 1));
         QTest::keyClick(window_.get(), Qt::Key_N);  // frame 1: "no ball"
         QCOMPARE(window_->navigator()->current(), 2);
+        QVERIFY2(window_->statusBar()->currentMessage().startsWith("Frame 1: no ball, saved to truth.csv"),
+                 qPrintable(window_->statusBar()->currentMessage()));
 
         const auto rows = readTruth(truthPath());  // already on disk
         QCOMPARE(int(rows.size()), 2);

@@ -115,8 +115,14 @@ std::optional<QString> TruthMarker::commit(TruthRow row)
 {
     if (frame_ < 0) return tr("no frame on screen");
     // A robot pose recorded with the session (simulated tours have one) stays with the frame.
-    if (const TruthRow* old = truth_->row(frame_)) row.robot = old->robot;
+    QString replaced;
+    if (const TruthRow* old = truth_->row(frame_)) {
+        row.robot = old->robot;
+        replaced = tr(" (replaces %1; mark again or Delete to change it)").arg(rowText(*old));
+    }
     if (const auto err = truth_->set(row)) return err;
+    // Every mark is said once: a key press alone shows nothing else when the frame moves on.
+    emit message(tr("Frame %1: %2, saved to truth.csv%3").arg(frame_).arg(rowText(row), replaced));
     if (advance_) emit advanceRequested();
     return std::nullopt;
 }
@@ -220,13 +226,21 @@ void TruthMarker::fillMenu(QMenu* menu)
     });
 }
 
+QString TruthMarker::rowText(const TruthRow& r)
+{
+    return r.ballVisible ? tr("ball at (%1, %2) px, %3 m away").arg(r.px, 0, 'f', 0).arg(r.py, 0, 'f', 0).arg(std::hypot(r.xM, r.yM), 0, 'f', 2)
+                         : tr("no ball");
+}
+
 QString TruthMarker::describe() const
 {
     if (!truth_->isOpen()) return marking_ ? tr("truth: %1").arg(truth_->closedReason()) : QString();
     QString state = tr("truth: not marked");
-    if (const TruthRow* r = truth_->row(frame_))
-        state = r->ballVisible ? tr("truth: ball %1 m away").arg(std::hypot(r->xM, r->yM), 0, 'f', 2) : tr("truth: no ball");
-    return tr("%1 | %2 of %3 frames marked").arg(state).arg(truth_->rows().size()).arg(count_);
+    if (const TruthRow* r = truth_->row(frame_)) state = tr("truth: %1").arg(rowText(*r));
+    const QString counts = tr("%1 | %2 of %3 frames marked").arg(state).arg(truth_->rows().size()).arg(count_);
+    if (!marking_) return counts;
+    return tr("MARKING TRUTH: click the ball | A detector's result | N no ball | Del clear | U next unmarked | "
+              "T stop\n%1").arg(counts);
 }
 
 }  // namespace omnitune

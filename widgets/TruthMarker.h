@@ -69,6 +69,7 @@ private:
     void refresh();
     bool runIsCurrent() const;
     std::optional<QString> notOnScreen() const;
+    static QString rowText(const TruthRow& row);  // "ball at (320, 65) px, 2.01 m away" / "no ball"
 
     TruthDocument* truth_;
     PipelineView* view_;
