@@ -34,7 +34,8 @@ namespace omnitune {
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), view_(new PipelineView(this)), nav_(new FrameNavigator(this)),
       panel_(new ThresholdPanel(&doc_, this)), candidates_(new CandidateTableModel(this)),
-      marker_(new TruthMarker(&truth_, view_, this)), resultLabel_(new QLabel(this)), truthLabel_(new QLabel(this)), timingLabel_(new QLabel(this)), pixelLabel_(new QLabel(this))
+      marker_(new TruthMarker(&truth_, view_, this)), resultLabel_(new QLabel(this)), truthLabel_(new QLabel(this)),
+      timingLabel_(new QLabel(this)), pixelLabel_(new QLabel(this))
 {
     auto* central = new QWidget(this);
     auto* layout = new QVBoxLayout(central);
@@ -65,7 +66,8 @@ MainWindow::MainWindow(QWidget* parent)
 
     statusBar()->addWidget(pixelLabel_, 1);
     statusBar()->addPermanentWidget(timingLabel_);
-    timingLabel_->setToolTip(tr("Time per stage of this frame, ms: segmentation, binary image, Canny edges, Hough, validation; total and the running average over about 100 frames"));
+    timingLabel_->setToolTip(tr("Time per stage of this frame, ms: segmentation, binary image, Canny edges, Hough, "
+                                "validation; total and the running average over about 100 frames"));
 
     connect(nav_, &FrameNavigator::frameRequested, this, &MainWindow::showFrame);
     connect(&runner_, &PipelineRunner::finished, this, &MainWindow::onRunFinished);

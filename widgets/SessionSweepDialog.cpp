@@ -77,7 +77,7 @@ SessionSweepDialog::SessionSweepDialog(FrameNavigator* navigator, QWidget* paren
     note_->setWordWrap(true);
     table_->setObjectName("numbers");
     table_->setHorizontalHeaderLabels({tr("Current config"), tr("Saved config")});
-    table_->setVerticalHeaderLabels({tr("Frames"), tr("Frames with a ball"), tr("Detection ratio"),
+    table_->setVerticalHeaderLabels({tr("Frames"), tr("Ball detected in"), tr("Detection ratio"),
                                      tr("False positives"), tr("Time per frame")});
     // The header's tooltips say what each number counts.
     const QString tips[RowCount] = {
