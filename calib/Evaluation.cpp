@@ -49,6 +49,17 @@ std::string fmt(const char* f, double a, double b)
 
 }  // namespace
 
+TruthVerdict judge(const FrameOutcome& o, const TruthRow* truth, const EvaluationOptions& options)
+{
+    if (!truth) return TruthVerdict::Unannotated;
+    const BallDetection& d = o.detection;
+    if (!o.processed) return truth->ballVisible ? TruthVerdict::Missed : TruthVerdict::Correct;
+    if (!truth->ballVisible) return d.found ? TruthVerdict::FalsePositive : TruthVerdict::Correct;
+    if (!d.found) return TruthVerdict::Missed;
+    return std::hypot(d.xM - truth->xM, d.yM - truth->yM) <= options.maxErrorM ? TruthVerdict::Correct
+                                                                               : TruthVerdict::FalsePositive;
+}
+
 EvaluationRow evaluate(const std::vector<FrameOutcome>& outcomes, const std::map<int, TruthRow>& truth,
                        const EvaluationOptions& options)
 {
@@ -77,8 +88,9 @@ EvaluationRow evaluate(const std::vector<FrameOutcome>& outcomes, const std::map
         ++row.annotated;
         const TruthRow& tr = t->second;
         const BallDetection& d = o.detection;
+        const TruthVerdict verdict = judge(o, &tr, options);
         if (!tr.ballVisible) {
-            row.falsePositives += d.found;
+            row.falsePositives += verdict == TruthVerdict::FalsePositive;
             continue;
         }
         ++row.withBall;
@@ -92,10 +104,7 @@ EvaluationRow evaluate(const std::vector<FrameOutcome>& outcomes, const std::map
         errorSum += err;
         ++errorCount;
         row.maxErrorM = std::max(row.maxErrorM, err);
-        if (err <= options.maxErrorM)
-            ++row.correct;
-        else
-            ++row.falsePositives;
+        ++(verdict == TruthVerdict::Correct ? row.correct : row.falsePositives);
         if (tr.robot) {
             const cv::Point2d p = toFieldFrame(*tr.robot, {d.xM, d.yM});
             detected.add(p.x, p.y);

@@ -51,6 +51,15 @@ struct EvaluationRow {
 EvaluationRow evaluate(const std::vector<FrameOutcome>& outcomes, const std::map<int, TruthRow>& truth,
                        const EvaluationOptions& options = {});
 
+// One frame against its truth, as evaluate() counts it.
+enum class TruthVerdict {
+    Unannotated,    // no truth row for the frame
+    Correct,        // ball visible and found within maxErrorM, or no ball and none found
+    Missed,         // ball visible, nothing found (or the frame could not be processed)
+    FalsePositive,  // a detection in a ball-less frame, or farther than maxErrorM from the truth
+};
+TruthVerdict judge(const FrameOutcome& outcome, const TruthRow* truth, const EvaluationOptions& options = {});
+
 std::string evaluationMarkdown(const std::vector<EvaluationRow>& rows);
 std::string evaluationCsv(const std::vector<EvaluationRow>& rows);
 

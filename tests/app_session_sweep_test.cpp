@@ -15,6 +15,7 @@
 
 #include <QAction>
 #include <QLabel>
+#include <QListWidget>
 #include <QPushButton>
 #include <QToolTip>
 #include <QtTest>
@@ -228,6 +229,16 @@ private slots:
         QVERIFY2(text.contains("False positives") && !text.contains("no truth.csv"), qPrintable(text));
         QVERIFY2(text.contains("Detection ratio"), qPrintable(text));
         QVERIFY2(text.contains("Compared with " + window.document()->path()), qPrintable(text));
+
+        // The frames behind the numbers are listed: a missed one shows when clicked.
+        QCOMPARE(int(r->falsePositiveFrames.size()), r->currentRow.falsePositives);
+        QVERIFY(!r->missedFrames.empty());
+        auto* list = dialog->findChild<QListWidget*>("changeList");
+        const auto found = list->findItems(QString("Frame %1: missed").arg(r->missedFrames.back()), Qt::MatchStartsWith);
+        QCOMPARE(found.size(), 1);
+        list->scrollToItem(found[0]);
+        QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier, list->visualItemRect(found[0]).center());
+        QCOMPARE(window.navigator()->current(), r->missedFrames.back());
 
         // The tooltip names the marks of the frame under the cursor and explains the colours.
         const int firstVanished = slider->marks(FrameMarkKind::Vanished).front().frame;

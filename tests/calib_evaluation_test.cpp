@@ -45,6 +45,21 @@ FrameOutcome missed(int frame, bool processed = true)
 class EvaluationTest : public QObject {
     Q_OBJECT
 private slots:
+    // The per-frame verdict the sweep lists and evaluate() counts.
+    void judgesEachFrame()
+    {
+        const TruthRow ballHere = ball(1, 1.0, 2.0);
+        TruthRow noBall;
+        noBall.frame = 1;
+        QCOMPARE(judge(seen(1, 1.1, 2.0), nullptr), TruthVerdict::Unannotated);
+        QCOMPARE(judge(seen(1, 1.1, 2.0), &ballHere), TruthVerdict::Correct);
+        QCOMPARE(judge(seen(1, 1.6, 2.0), &ballHere), TruthVerdict::FalsePositive);  // 0.6 m off
+        QCOMPARE(judge(missed(1), &ballHere), TruthVerdict::Missed);
+        QCOMPARE(judge(missed(1, false), &ballHere), TruthVerdict::Missed);  // unreadable
+        QCOMPARE(judge(seen(1, 1.0, 2.0), &noBall), TruthVerdict::FalsePositive);
+        QCOMPARE(judge(missed(1), &noBall), TruthVerdict::Correct);
+    }
+
     void ratioMeanStdAndFalsePositives()
     {
         std::map<int, TruthRow> truth;

@@ -191,6 +191,12 @@ void SessionSweep::sweep(SweepResult& result)
     if (saved.sameAsCurrent) result.saved = result.current;
 
     result.currentRow = evaluate(result.current, request_.truth, request_.evaluation);
+    for (const FrameOutcome& o : result.current) {
+        const auto t = request_.truth.find(o.frame);
+        const TruthVerdict v = judge(o, t == request_.truth.end() ? nullptr : &t->second, request_.evaluation);
+        if (v == TruthVerdict::FalsePositive) result.falsePositiveFrames.push_back(o.frame);
+        if (v == TruthVerdict::Missed) result.missedFrames.push_back(o.frame);
+    }
     if (result.hasSaved) {
         result.savedRow = evaluate(result.saved, request_.truth, request_.evaluation);
         result.comparison = compareSessions(result.current, result.saved, request_.comparison);

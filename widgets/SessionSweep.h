@@ -49,6 +49,8 @@ struct SweepResult {
     std::vector<FrameOutcome> current;
     std::vector<FrameOutcome> saved;
     EvaluationRow currentRow;
+    std::vector<int> falsePositiveFrames;  // the current config's, with truth (judge())
+    std::vector<int> missedFrames;
     EvaluationRow savedRow;
     SessionComparison comparison;
 

@@ -314,8 +314,14 @@ void SessionSweepDialog::fillChanges(const SweepResult& r)
             item->setData(Qt::UserRole, f.frame);
         }
     }
+    // With truth, the frames that make the numbers, to look at one by one.
+    for (const auto& [frames, what] : {std::pair{&r.falsePositiveFrames, tr("false positive")}, std::pair{&r.missedFrames, tr("missed")}})
+        for (int frame : *frames) {
+            auto* item = new QListWidgetItem(tr("Frame %1: %2 (current config)").arg(frame).arg(what), changeList_);
+            item->setData(Qt::UserRole, frame);
+        }
     const bool any = compare && c.changed() > 0;
-    changeList_->setVisible(any);
+    changeList_->setVisible(any || changeList_->count() > 0);
     previousButton_->setVisible(any);
     nextButton_->setVisible(any);
 }
