@@ -5,6 +5,7 @@
 #include "FrameNavigator.h"
 #include "FrameSourceFactory.h"
 #include "MarkedSlider.h"
+#include "NoticeBar.h"
 #include "PipelineView.h"
 #include "PixelInspector.h"
 #include "RecentFiles.h"
@@ -43,6 +44,8 @@ MainWindow::MainWindow(QWidget* parent)
     layout->setSpacing(2);
     resultLabel_->setObjectName("result");
     resultLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    notices_ = new NoticeBar(this);
+    layout->addWidget(notices_);
     layout->addWidget(view_, 1);
     auto* resultRow = new QHBoxLayout;
     resultRow->addWidget(resultLabel_, 1);
@@ -208,11 +211,10 @@ bool MainWindow::openSource(const QString& path)
         return false;
     }
     if (!maybeKeepTruth()) return false;
-    if (!opened.warnings.empty()) {
-        QStringList w;
-        for (const auto& s : opened.warnings) w << QString::fromStdString(s);
-        statusBar()->showMessage(w.join("; "), 10000);
-    }
+    notices_->clear();  // they were about the previous source
+    QStringList sourceWarnings;
+    for (const auto& s : opened.warnings) sourceWarnings << QString::fromStdString(s);
+    notices_->add(tr("Opened %1 with warnings:").arg(path), sourceWarnings);
     // A session brings its own config: use it unless that would throw away unsaved edits.
     const auto* session = dynamic_cast<const SessionSource*>(opened.source.get());
     if (session && session->reader().hasConfig() && maybeSave())
@@ -242,9 +244,9 @@ void MainWindow::openTruth(const QString& sessionFolder)
     }
     QStringList warnings;
     if (const auto why = truth_.open(sessionFolder, &warnings))
-        statusBar()->showMessage(*why, 15000);
-    else if (!warnings.isEmpty())
-        statusBar()->showMessage(warnings.join("; "), 15000);
+        notices_->add(tr("Ground truth cannot be marked:"), {*why});
+    else
+        notices_->add(tr("Ground truth (truth.csv):"), warnings);
 }
 
 bool MainWindow::openConfig(const QString& path)
@@ -254,7 +256,8 @@ bool MainWindow::openConfig(const QString& path)
         QMessageBox::critical(this, tr("Cannot load the config"), *err);
         return false;
     }
-    if (!warnings.isEmpty()) statusBar()->showMessage(warnings.join("; "), 10000);
+    notices_->add(tr("Config %1 loaded with warnings (omnitune-config --upgrade FILE writes the missing keys):").arg(path),
+                  warnings);
     return true;
 }
 
@@ -454,7 +457,7 @@ void MainWindow::applyToSession()
 void MainWindow::onSessionSweepFinished(std::shared_ptr<const SweepResult> result)
 {
     if (!result->ok()) {
-        statusBar()->showMessage(result->error, 10000);
+        notices_->add(tr("Apply to whole session failed:"), {result->error});
         return;
     }
     QVector<FrameMark> marks = sweepMarks(*result);

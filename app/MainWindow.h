@@ -18,6 +18,7 @@ namespace omnitune {
 
 class CandidateTableModel;
 class FrameNavigator;
+class NoticeBar;
 class PipelineView;
 class SessionSweepDialog;
 struct SweepResult;
@@ -43,6 +44,7 @@ public:
     TruthMarker* truthMarker() const { return marker_; }
     PipelineView* pipelineView() const { return view_; }
     FrameNavigator* navigator() const { return nav_; }
+    NoticeBar* notices() const { return notices_; }
     ThresholdPanel* thresholdPanel() const { return panel_; }
     CandidateTableModel* candidates() const { return candidates_; }
     std::shared_ptr<const PipelineRun> lastRun() const { return lastRun_; }
@@ -85,6 +87,7 @@ private:
     CandidateTableModel* candidates_;
     TruthMarker* marker_;
     RecentFiles* recent_ = nullptr;
+    NoticeBar* notices_ = nullptr;
     QLabel* resultLabel_;
     QLabel* truthLabel_;
     QLabel* timingLabel_;

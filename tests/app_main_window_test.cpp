@@ -6,6 +6,7 @@
 #include "ConfigParser.h"
 #include "FrameNavigator.h"
 #include "MainWindow.h"
+#include "NoticeBar.h"
 #include "PipelineView.h"
 #include "ThresholdPanel.h"
 #include "WindowTestSupport.h"
@@ -15,6 +16,7 @@
 #include <QMenu>
 #include <QMimeData>
 #include <QTableView>
+#include <QToolButton>
 #include <QtTest>
 
 using namespace omnitune;
@@ -153,6 +155,26 @@ private slots:
         QVERIFY2(text.contains("broken.yml") && text.contains("validation.min_non_green_pct"), qPrintable(text));
         QCOMPARE(window_->document()->config().validation.minNonGreenPct, before);
         QCOMPARE(window_->document()->path(), session_ + "/config.yml");
+    }
+
+    void loadWarningsStayReadableUntilDismissed()
+    {
+        QVERIFY(!window_->notices()->isVisible());  // the demo config is complete
+        const QString partial = tmp_.filePath("partial.yml");
+        QFile f(partial);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("schema: 1\nedges:\n  canny_low: 50\n");
+        f.close();
+        QVERIFY(window_->openConfig(partial));
+        QCOMPARE(window_->document()->config().edges.cannyLow, 50);
+        QVERIFY(window_->notices()->isVisible());
+        const QString text = window_->notices()->text();
+        QVERIFY2(text.contains("partial.yml") && text.contains(": missing, using the default") && text.contains("more"),
+                 qPrintable(text));  // dozens of keys missing: the first few and a count
+        auto* dismiss = window_->notices()->findChild<QToolButton*>();
+        QVERIFY(dismiss);
+        QTest::mouseClick(dismiss, Qt::LeftButton);
+        QVERIFY(!window_->notices()->isVisible());
     }
 
     void closingWithUnsavedChangesAsks()
