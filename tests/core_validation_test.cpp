@@ -22,6 +22,17 @@ QString verdict(const BallCandidate& c)
         .arg(c.scores.runOnPct);
 }
 
+// An unvalidated candidate centred on `p`, with the distance and expected radius there.
+BallCandidate candidateAt(const EdgeStages& s, cv::Point p)
+{
+    BallCandidate cand;
+    cand.x = p.x;
+    cand.y = p.y;
+    cand.distancePx = s.geometry.distanceAt(p.x, p.y);
+    cand.expectedRadiusPx = s.ball.radiusAt(cand.distancePx);
+    return cand;
+}
+
 // A candidate at distance/angle validated against a frame built by `draw`.
 template <class Draw>
 BallCandidate validateAt(double distance, double angle, Draw draw)
@@ -32,11 +43,7 @@ BallCandidate validateAt(double distance, double angle, Draw draw)
     const cv::Point centre(int(std::lround(p.x)), int(std::lround(p.y)));
     draw(frame, c, centre, expectedRadius(c, distance));
     const EdgeStages s(c, frame);
-    BallCandidate cand;
-    cand.x = centre.x;
-    cand.y = centre.y;
-    cand.distancePx = s.geometry.distanceAt(centre.x, centre.y);
-    cand.expectedRadiusPx = s.ball.radiusAt(cand.distancePx);
+    BallCandidate cand = candidateAt(s, centre);
     validateCandidate(cand, s.classes, s.edges, s.geometry, s.ball, c.validation);
     return cand;
 }
@@ -180,11 +187,7 @@ private slots:
         cv::Mat frame = greenField(c);
         const cv::Point p = drawBall(frame, c, 150, 0);
         const EdgeStages s(c, frame);
-        BallCandidate cand;
-        cand.x = p.x;
-        cand.y = p.y;
-        cand.distancePx = s.geometry.distanceAt(p.x, p.y);
-        cand.expectedRadiusPx = s.ball.radiusAt(cand.distancePx);
+        BallCandidate cand = candidateAt(s, p);
         validateCandidate(cand, s.classes, s.edges, s.geometry, s.ball, c.validation);
         QCOMPARE(cand.rejected, RejectReason::None);
         c.validation.minNonBlackPct = 100.1;
