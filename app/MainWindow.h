@@ -2,10 +2,10 @@
 // The workbench window: wires the source, the pipeline runner, the five panes, the frame
 // navigator, the tuning panel and the config document together. It owns no vision and no
 // editor logic of its own: each lives in widgets/.
-#include "ConfigDocument.h"
-#include "FrameSource.h"
-#include "PipelineRunner.h"
-#include "TruthDocument.h"
+#include "widgets/ConfigDocument.h"
+#include "calib/source/FrameSource.h"
+#include "widgets/PipelineRunner.h"
+#include "widgets/TruthDocument.h"
 
 #include <QMainWindow>
 

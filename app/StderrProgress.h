@@ -1,7 +1,7 @@
 #pragma once
 // Progress for the command-line tools: one line on stderr, rewritten every few percent, only
 // when stderr is a terminal (logs and CI output stay clean).
-#include "Progress.h"
+#include "core/Progress.h"
 
 #include <cstdio>
 #include <string>

@@ -1,7 +1,7 @@
-#include "ToolConfig.h"
+#include "app/ToolConfig.h"
 
-#include "ConfigParser.h"
-#include "Session.h"
+#include "core/ConfigParser.h"
+#include "calib/session/Session.h"
 
 #include <opencv2/core/utils/logger.hpp>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The config a command-line tool runs with: --config FILE, else the session's own config.yml;
 // --algorithm overrides the file's choice. Warnings go to stderr; an error is one line.
-#include "Config.h"
+#include "core/Config.h"
 
 #include <optional>
 #include <string>

@@ -1,8 +1,8 @@
 // omnitune-config: check a config.yml, upgrade it to the current schema, print the defaults,
 // or print the schema reference.
-#include "ConfigParser.h"
-#include "ConfigSchema.h"
-#include "ConfigWriter.h"
+#include "core/ConfigParser.h"
+#include "core/ConfigSchema.h"
+#include "core/ConfigWriter.h"
 
 #include <cstring>
 #include <iostream>

@@ -1,10 +1,10 @@
 // omnitune-detect: the detector without a GUI, as the robot runs it. One CSV row per frame.
-#include "BatchRun.h"
-#include "CommandLine.h"
-#include "DetectionCsv.h"
-#include "FrameSourceFactory.h"
-#include "StderrProgress.h"
-#include "ToolConfig.h"
+#include "calib/eval/BatchRun.h"
+#include "app/CommandLine.h"
+#include "calib/eval/DetectionCsv.h"
+#include "calib/source/FrameSourceFactory.h"
+#include "app/StderrProgress.h"
+#include "app/ToolConfig.h"
 
 #include <opencv2/imgcodecs.hpp>
 

@@ -1,12 +1,12 @@
 // omnitune-eval: the thesis' Table 5.x for recorded sessions with truth.csv, one row per
 // session and algorithm.
-#include "BatchRun.h"
-#include "CommandLine.h"
-#include "Evaluation.h"
-#include "SessionReader.h"
-#include "SessionSource.h"
-#include "StderrProgress.h"
-#include "ToolConfig.h"
+#include "calib/eval/BatchRun.h"
+#include "app/CommandLine.h"
+#include "calib/eval/Evaluation.h"
+#include "calib/session/SessionReader.h"
+#include "calib/source/SessionSource.h"
+#include "app/StderrProgress.h"
+#include "app/ToolConfig.h"
 
 #include <filesystem>
 #include <iostream>

@@ -1,5 +1,5 @@
 // omnitune: the workbench window, on the session given as argument or the bundled demo.
-#include "MainWindow.h"
+#include "app/MainWindow.h"
 
 #include <QApplication>
 #include <QDir>

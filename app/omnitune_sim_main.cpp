@@ -1,11 +1,11 @@
 // omnitune-sim: renders a robot tour around a static ball (thesis Fig. 5.1) as a session
 // folder with truth.csv and the config it was rendered with.
-#include "CommandLine.h"
-#include "ToolConfig.h"
-#include "SceneSimulator.h"
-#include "SessionWriter.h"
-#include "StderrProgress.h"
-#include "Tour.h"
+#include "app/CommandLine.h"
+#include "app/ToolConfig.h"
+#include "calib/sim/SceneSimulator.h"
+#include "calib/session/SessionWriter.h"
+#include "app/StderrProgress.h"
+#include "calib/sim/Tour.h"
 
 #include <cmath>
 #include <cstdio>

@@ -3,10 +3,10 @@
 // Run: scripts/bench  (numbers and machine in docs/performance.md)
 #include "RatioReporter.h"
 
-#include "BallKind.h"
-#include "Pipeline.h"
-#include "SceneSimulator.h"
-#include "Tour.h"
+#include "calib/sim/BallKind.h"
+#include "core/Pipeline.h"
+#include "calib/sim/SceneSimulator.h"
+#include "calib/sim/Tour.h"
 
 #include <opencv2/imgproc.hpp>
 

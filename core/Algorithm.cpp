@@ -1,4 +1,4 @@
-#include "Algorithm.h"
+#include "core/Algorithm.h"
 
 namespace omnitune {
 

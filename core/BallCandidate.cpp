@@ -1,4 +1,4 @@
-#include "BallCandidate.h"
+#include "core/BallCandidate.h"
 
 namespace omnitune {
 

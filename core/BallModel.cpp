@@ -1,4 +1,4 @@
-#include "BallModel.h"
+#include "core/BallModel.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "BallPosition.h"
+#include "core/BallPosition.h"
 
 #include <cmath>
 

@@ -2,7 +2,7 @@
 // Where on the ground a ball seen at an image point lies, relative to the robot: the
 // pipeline's final step (thesis ch. 4.3), shared with ground-truth marking in the workbench
 // so a hand-marked ball and a detected one are measured the same way.
-#include "DistanceMap.h"
+#include "core/DistanceMap.h"
 
 namespace omnitune {
 

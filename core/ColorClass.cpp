@@ -1,4 +1,4 @@
-#include "ColorClass.h"
+#include "core/ColorClass.h"
 
 namespace omnitune {
 

@@ -1,6 +1,6 @@
-#include "ColorLut.h"
+#include "core/ColorLut.h"
 
-#include "Geometry.h"
+#include "core/Geometry.h"
 
 #include <opencv2/imgproc.hpp>
 

@@ -1,9 +1,9 @@
 #pragma once
 // Colour look-up table: maps a pixel colour straight to its colour class, replacing the HSV
 // conversion and range tests per pixel by one array read (thesis ch. 4, "visionTh").
-#include "ColorClass.h"
-#include "HsvRange.h"
-#include "PixelFormat.h"
+#include "core/ColorClass.h"
+#include "core/HsvRange.h"
+#include "core/PixelFormat.h"
 
 #include <opencv2/core.hpp>
 

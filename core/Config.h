@@ -1,17 +1,17 @@
 #pragma once
 // Everything the detector needs, as plain option structs whose defaults are the thesis'
 // numbers. Ranges, units and meanings live once in ConfigSchema; docs/config.md is made from it.
-#include "Algorithm.h"
-#include "BallModel.h"
-#include "CameraSettings.h"
-#include "ColorLut.h"
-#include "DistanceMap.h"
-#include "Edges.h"
-#include "Geometry.h"
-#include "OpenCvHough.h"
-#include "RadialSensors.h"
-#include "SpecificHough.h"
-#include "Validation.h"
+#include "core/Algorithm.h"
+#include "core/BallModel.h"
+#include "core/CameraSettings.h"
+#include "core/ColorLut.h"
+#include "core/DistanceMap.h"
+#include "core/Edges.h"
+#include "core/Geometry.h"
+#include "core/OpenCvHough.h"
+#include "core/RadialSensors.h"
+#include "core/SpecificHough.h"
+#include "core/Validation.h"
 
 #include <opencv2/core.hpp>
 

@@ -1,4 +1,4 @@
-#include "ConfigIssue.h"
+#include "core/ConfigIssue.h"
 
 namespace omnitune {
 

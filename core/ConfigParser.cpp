@@ -1,7 +1,7 @@
-#include "ConfigParser.h"
+#include "core/ConfigParser.h"
 
-#include "ConfigSchema.h"
-#include "YamlText.h"
+#include "core/ConfigSchema.h"
+#include "core/YamlText.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>

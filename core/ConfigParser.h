@@ -1,8 +1,8 @@
 #pragma once
 // Reading config.yml. parseConfig() is pure (text in, config plus typed warnings out);
 // loadConfig() adds the file and the mask image beside it.
-#include "Config.h"
-#include "ConfigIssue.h"
+#include "core/Config.h"
+#include "core/ConfigIssue.h"
 
 #include <optional>
 #include <string>

@@ -1,4 +1,4 @@
-#include "ConfigSchema.h"
+#include "core/ConfigSchema.h"
 
 #include <cmath>
 #include <cstdio>

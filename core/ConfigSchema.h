@@ -2,8 +2,8 @@
 // The config schema, declared once: every key of config.yml with its type, unit, range and
 // meaning, and how to read and write it in a Config. The loader, the writer, checkConfig(),
 // the threshold panel's tooltips and docs/config.md all come from this table.
-#include "Config.h"
-#include "ConfigIssue.h"
+#include "core/Config.h"
+#include "core/ConfigIssue.h"
 
 #include <functional>
 #include <string>

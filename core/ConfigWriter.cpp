@@ -1,6 +1,6 @@
-#include "ConfigWriter.h"
+#include "core/ConfigWriter.h"
 
-#include "ConfigSchema.h"
+#include "core/ConfigSchema.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>

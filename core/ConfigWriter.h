@@ -1,7 +1,7 @@
 #pragma once
 // Writing config.yml: every schema key with a comment giving its unit and range.
-#include "Config.h"
-#include "ConfigIssue.h"
+#include "core/Config.h"
+#include "core/ConfigIssue.h"
 
 #include <optional>
 #include <string>

@@ -1,4 +1,4 @@
-#include "DistanceMap.h"
+#include "core/DistanceMap.h"
 
 #include <algorithm>
 #include <cmath>

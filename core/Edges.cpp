@@ -1,8 +1,8 @@
-#include "Edges.h"
+#include "core/Edges.h"
 
-#include "ColorClass.h"
-#include "FillBytes.h"
-#include "Geometry.h"
+#include "core/ColorClass.h"
+#include "core/FillBytes.h"
+#include "core/Geometry.h"
 
 #include <algorithm>
 #include <cstdlib>

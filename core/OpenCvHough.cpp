@@ -1,7 +1,7 @@
-#include "OpenCvHough.h"
+#include "core/OpenCvHough.h"
 
-#include "BallModel.h"
-#include "Geometry.h"
+#include "core/BallModel.h"
+#include "core/Geometry.h"
 
 #include <opencv2/imgproc.hpp>
 

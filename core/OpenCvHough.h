@@ -1,7 +1,7 @@
 #pragma once
 // Thesis section 4.2: circles from cv::HoughCircles (HOUGH_GRADIENT) on the binary image, a
 // circle larger than the ball would be at its distance rejected.
-#include "BallCandidate.h"
+#include "core/BallCandidate.h"
 
 #include <opencv2/core.hpp>
 

@@ -1,8 +1,8 @@
-#include "Pipeline.h"
+#include "core/Pipeline.h"
 
-#include "BallPosition.h"
-#include "ConfigSchema.h"
-#include "FillBytes.h"
+#include "core/BallPosition.h"
+#include "core/ConfigSchema.h"
+#include "core/FillBytes.h"
 
 #include <opencv2/imgproc.hpp>
 

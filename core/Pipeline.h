@@ -2,8 +2,8 @@
 // The detector: one call per frame, from the camera image to the ball in metres (thesis
 // ch. 4). Holds every buffer between frames, so a warm pipeline allocates nothing on the
 // specific path (cv::HoughCircles allocates inside OpenCV on the opencv/combined paths).
-#include "Config.h"
-#include "PipelineResult.h"
+#include "core/Config.h"
+#include "core/PipelineResult.h"
 
 #include <memory>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // What one pipeline call produces.
-#include "BallCandidate.h"
+#include "core/BallCandidate.h"
 
 #include <opencv2/core.hpp>
 

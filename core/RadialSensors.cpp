@@ -1,4 +1,4 @@
-#include "RadialSensors.h"
+#include "core/RadialSensors.h"
 
 #include <cmath>
 

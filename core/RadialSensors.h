@@ -1,8 +1,8 @@
 #pragma once
 // Radial sensors (thesis Fig. 4.3): rays from the robot centre between two radii. Line and
 // obstacle detection read the runs of colour classes along each ray instead of the whole image.
-#include "ColorClass.h"
-#include "Geometry.h"
+#include "core/ColorClass.h"
+#include "core/Geometry.h"
 
 #include <opencv2/core.hpp>
 

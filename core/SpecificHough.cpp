@@ -1,8 +1,8 @@
-#include "SpecificHough.h"
+#include "core/SpecificHough.h"
 
-#include "BallModel.h"
-#include "FillBytes.h"
-#include "Geometry.h"
+#include "core/BallModel.h"
+#include "core/FillBytes.h"
+#include "core/Geometry.h"
 
 #include <algorithm>
 #include <climits>

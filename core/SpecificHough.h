@@ -9,7 +9,7 @@
 // circle of the radius at the edge pixel's own distance. The literal rule shifts every maximum
 // outwards (the near side's edges see a bigger radius, the far side's a smaller one): 3 px at
 // 80 px from the centre with the default model. `radiusAtCentre = false` restores it.
-#include "BallCandidate.h"
+#include "core/BallCandidate.h"
 
 #include <opencv2/core.hpp>
 

@@ -1,8 +1,8 @@
-#include "Validation.h"
+#include "core/Validation.h"
 
-#include "BallModel.h"
-#include "ColorClass.h"
-#include "Geometry.h"
+#include "core/BallModel.h"
+#include "core/ColorClass.h"
+#include "core/Geometry.h"
 
 #include <algorithm>
 #include <climits>

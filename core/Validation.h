@@ -1,7 +1,7 @@
 #pragma once
 // Thesis section 4.4: a candidate is a ball only if, in its square, enough pixels are
 // non-green and non-black, and enough of its circle is present as edges (circularity).
-#include "BallCandidate.h"
+#include "core/BallCandidate.h"
 
 #include <opencv2/core.hpp>
 

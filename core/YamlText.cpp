@@ -1,4 +1,4 @@
-#include "YamlText.h"
+#include "core/YamlText.h"
 
 #include <regex>
 

@@ -1,8 +1,8 @@
 #pragma once
 // Hand-checkable test scenes for the core tests: a flat green field with shapes drawn at
 // known places, in the geometry of a Config. (Realistic scenes come from calib's simulator.)
-#include "BallModel.h"
-#include "Config.h"
+#include "core/BallModel.h"
+#include "core/Config.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -44,9 +44,9 @@ inline cv::Point drawBall(cv::Mat& img, const Config& c, double distance, double
 
 }  // namespace omnitune::test
 
-#include "ColorLut.h"
-#include "Edges.h"
-#include "Geometry.h"
+#include "core/ColorLut.h"
+#include "core/Edges.h"
+#include "core/Geometry.h"
 
 namespace omnitune::test {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the offscreen tests of the workbench window: a scratch copy of the demo session,
 // answering modal message boxes, and waiting (event driven) for a frame's run.
-#include "MainWindow.h"
+#include "app/MainWindow.h"
 
 #include <QAbstractButton>
 #include <QApplication>

@@ -2,13 +2,13 @@
 // changes the panes, a threshold edit re-runs the frame and is undoable, the config saves and
 // reloads, a broken config is refused with a dialog naming the key, closing with unsaved
 // changes asks first, and at 1366x768 no pane is blank.
-#include "CandidateTableModel.h"
-#include "ConfigParser.h"
-#include "FrameNavigator.h"
-#include "MainWindow.h"
-#include "NoticeBar.h"
-#include "PipelineView.h"
-#include "ThresholdPanel.h"
+#include "widgets/CandidateTableModel.h"
+#include "core/ConfigParser.h"
+#include "widgets/FrameNavigator.h"
+#include "app/MainWindow.h"
+#include "widgets/NoticeBar.h"
+#include "widgets/PipelineView.h"
+#include "widgets/ThresholdPanel.h"
 #include "WindowTestSupport.h"
 
 #include <QAbstractSpinBox>

@@ -3,14 +3,14 @@
 // truth, stops early when cancelled, refuses a config that cannot run; in the window, a
 // stricter threshold makes detections vanish and the slider marks exactly those frames,
 // later edits flag the marks outdated, and the action needs a source.
-#include "BatchRun.h"
-#include "ConfigParser.h"
-#include "FrameNavigator.h"
-#include "MainWindow.h"
-#include "MarkedSlider.h"
-#include "SessionReader.h"
-#include "SessionSource.h"
-#include "SessionSweepDialog.h"
+#include "calib/eval/BatchRun.h"
+#include "core/ConfigParser.h"
+#include "widgets/FrameNavigator.h"
+#include "app/MainWindow.h"
+#include "widgets/MarkedSlider.h"
+#include "calib/session/SessionReader.h"
+#include "calib/source/SessionSource.h"
+#include "widgets/SessionSweepDialog.h"
 #include "WindowTestSupport.h"
 
 #include <QAction>

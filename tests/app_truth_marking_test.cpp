@@ -4,14 +4,14 @@
 // ball, Delete clears, U finds the next unmarked frame; every mark is in truth.csv at once,
 // the file from before marking is kept as truth.csv.bak, and a truth.csv with a broken header
 // is never overwritten.
-#include "BallModel.h"
-#include "FrameNavigator.h"
-#include "MainWindow.h"
-#include "MarkedSlider.h"
-#include "PipelineView.h"
-#include "TruthCsv.h"
-#include "TruthDocument.h"
-#include "TruthMarker.h"
+#include "core/BallModel.h"
+#include "widgets/FrameNavigator.h"
+#include "app/MainWindow.h"
+#include "widgets/MarkedSlider.h"
+#include "widgets/PipelineView.h"
+#include "calib/session/TruthCsv.h"
+#include "widgets/TruthDocument.h"
+#include "widgets/TruthMarker.h"
 #include "WindowTestSupport.h"
 
 #include <QLabel>

@@ -1,6 +1,6 @@
 // The evaluation statistics (thesis ch. 5) on hand-made outcomes whose numbers can be checked
 // by hand.
-#include "Evaluation.h"
+#include "calib/eval/Evaluation.h"
 
 #include <QtTest>
 

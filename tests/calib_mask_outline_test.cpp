@@ -1,5 +1,5 @@
 // The mask outline the workbench draws: the border of the processed region, hole included.
-#include "MaskOutline.h"
+#include "calib/mask/MaskOutline.h"
 
 #include <opencv2/imgproc.hpp>
 

@@ -1,9 +1,9 @@
 // The whole detector on generated omnidirectional frames (the simulator's robot tour): each of
 // the thesis' five balls is found within 2 px in at least 95 % of the frames where it is
 // visible, and nothing is found in frames without a ball.
-#include "Pipeline.h"
-#include "SceneSimulator.h"
-#include "Tour.h"
+#include "core/Pipeline.h"
+#include "calib/sim/SceneSimulator.h"
+#include "calib/sim/Tour.h"
 
 #include <QtTest>
 

@@ -1,9 +1,9 @@
 // The scene simulator: deterministic frames, ground truth that agrees with the distance map and
 // ball model, colours the default LUT classifies as intended, balls that pass the colour part of
 // the thesis' validation, and the Tour.
-#include "ColorLut.h"
-#include "SceneSimulator.h"
-#include "Tour.h"
+#include "core/ColorLut.h"
+#include "calib/sim/SceneSimulator.h"
+#include "calib/sim/Tour.h"
 
 #include <QtTest>
 

@@ -1,6 +1,6 @@
 // Comparing two configs' detections frame by frame (calib/SessionComparison): one readable
 // row per kind of change, the pairing by frame number and the counts.
-#include "SessionComparison.h"
+#include "calib/eval/SessionComparison.h"
 
 #include <QtTest>
 

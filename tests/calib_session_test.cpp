@@ -1,15 +1,15 @@
 // Recorded sessions and frame sources: bit-exact round trips in random order, the session.yml
 // and truth.csv parsers' typed warnings, interrupted recordings, and picking a source by path.
-#include "FrameSourceFactory.h"
-#include "ImageGlobSource.h"
-#include "Session.h"
-#include "SessionReader.h"
-#include "SessionSource.h"
-#include "SessionWriter.h"
-#include "TruthCsv.h"
-#include "VideoSource.h"
+#include "calib/source/FrameSourceFactory.h"
+#include "calib/source/ImageGlobSource.h"
+#include "calib/session/Session.h"
+#include "calib/session/SessionReader.h"
+#include "calib/source/SessionSource.h"
+#include "calib/session/SessionWriter.h"
+#include "calib/session/TruthCsv.h"
+#include "calib/source/VideoSource.h"
 
-#include "ConfigParser.h"
+#include "core/ConfigParser.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>

@@ -1,7 +1,7 @@
 // Colour LUT: classes of typical colours, agreement with direct HSV classification, hue
 // wrap-around, and the UYVY path agreeing with the BGR path.
-#include "ColorLut.h"
-#include "Geometry.h"
+#include "core/ColorLut.h"
+#include "core/Geometry.h"
 
 #include <opencv2/imgproc.hpp>
 

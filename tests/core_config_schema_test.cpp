@@ -1,7 +1,7 @@
 // The declared schema: its defaults are the thesis numbers, every key reads and writes, and
 // docs/config.md is the document generated from it.
-#include "ConfigSchema.h"
-#include "ConfigWriter.h"
+#include "core/ConfigSchema.h"
+#include "core/ConfigWriter.h"
 
 #include <QtTest>
 

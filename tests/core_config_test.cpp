@@ -1,7 +1,7 @@
 // config.yml: round trip, atomic save with backup, and load errors that name file and key.
-#include "ConfigParser.h"
-#include "ConfigSchema.h"
-#include "ConfigWriter.h"
+#include "core/ConfigParser.h"
+#include "core/ConfigSchema.h"
+#include "core/ConfigWriter.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>

@@ -1,6 +1,6 @@
 // Distance map (px <-> m, ball-height correction) and the ball radius model.
-#include "BallModel.h"
-#include "DistanceMap.h"
+#include "core/BallModel.h"
+#include "core/DistanceMap.h"
 
 #include <QtTest>
 

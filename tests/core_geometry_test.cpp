@@ -1,6 +1,6 @@
 // Geometry (used pixels, mask, distances) and radial sensors.
-#include "Geometry.h"
-#include "RadialSensors.h"
+#include "core/Geometry.h"
+#include "core/RadialSensors.h"
 
 #include <opencv2/imgproc.hpp>
 

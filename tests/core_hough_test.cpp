@@ -1,7 +1,7 @@
 // The specific circular Hough transform (thesis 4.1) and the cv::HoughCircles path (4.2).
 #include "DrawnScene.h"
-#include "OpenCvHough.h"
-#include "SpecificHough.h"
+#include "core/OpenCvHough.h"
+#include "core/SpecificHough.h"
 
 #include <QtTest>
 

@@ -1,7 +1,7 @@
 // The whole pipeline on drawn frames: detection and world position, the three algorithms,
 // bad frames, UYVY input, stage images, and no allocation once warm.
 #include "DrawnScene.h"
-#include "Pipeline.h"
+#include "core/Pipeline.h"
 
 #include <QtTest>
 

@@ -1,7 +1,7 @@
 // Candidate validation (thesis 4.4): non-green, non-black and circularity tests, each shown
 // rejecting the look-alike it exists for.
 #include "DrawnScene.h"
-#include "Validation.h"
+#include "core/Validation.h"
 
 #include <QtTest>
 

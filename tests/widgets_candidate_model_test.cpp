@@ -1,7 +1,7 @@
 // The candidate table (thesis Table 4.1 extended): a well-behaved Qt model, the texts of each
 // column, the accepted row highlighted, the failing score of a rejected row in red.
-#include "CandidateTableModel.h"
-#include "Config.h"
+#include "widgets/CandidateTableModel.h"
+#include "core/Config.h"
 
 #include <QAbstractItemModelTester>
 #include <QBrush>

@@ -1,8 +1,8 @@
 // The pipeline runner decodes frames on its own thread (the window never blocks on a PNG),
 // re-runs a config change on the frame it already decoded, reports an unreadable frame as
 // such, and hands back the tag of the source a run came from.
-#include "PipelineRunner.h"
-#include "SceneSimulator.h"
+#include "widgets/PipelineRunner.h"
+#include "calib/sim/SceneSimulator.h"
 
 #include <QtTest>
 

@@ -2,9 +2,9 @@
 // edit, clicks on its check boxes, choices in its combo box; every edit must reach the
 // ConfigDocument as one undoable change, refused edits must leave the config alone and say why,
 // and document changes (undo, load) must show up in the editors.
-#include "ConfigDocument.h"
-#include "ConfigSchema.h"
-#include "ThresholdPanel.h"
+#include "widgets/ConfigDocument.h"
+#include "core/ConfigSchema.h"
+#include "widgets/ThresholdPanel.h"
 
 #include <QAbstractItemView>
 #include <QCheckBox>

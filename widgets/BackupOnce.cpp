@@ -1,4 +1,4 @@
-#include "BackupOnce.h"
+#include "widgets/BackupOnce.h"
 
 #include <QFileInfo>
 #include <QSet>

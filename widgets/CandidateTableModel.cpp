@@ -1,6 +1,6 @@
-#include "CandidateTableModel.h"
+#include "widgets/CandidateTableModel.h"
 
-#include "Config.h"
+#include "core/Config.h"
 
 #include <QBrush>
 #include <QColor>

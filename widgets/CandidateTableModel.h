@@ -3,8 +3,8 @@
 // each candidate is, its radius and Hough votes, its three validation scores and the test that
 // rejected it. The accepted ball's row is highlighted; in a rejected row the failing cell is
 // red. Tooltips explain each column and the threshold it was compared against.
-#include "BallCandidate.h"
-#include "PipelineResult.h"
+#include "core/BallCandidate.h"
+#include "core/PipelineResult.h"
 
 #include <QAbstractTableModel>
 

@@ -1,6 +1,6 @@
-#include "CandidateTableView.h"
+#include "widgets/CandidateTableView.h"
 
-#include "CandidateTableModel.h"
+#include "widgets/CandidateTableModel.h"
 
 #include <QHeaderView>
 #include <QMenu>

@@ -1,8 +1,8 @@
-#include "ConfigDocument.h"
+#include "widgets/ConfigDocument.h"
 
-#include "BackupOnce.h"
-#include "ConfigParser.h"
-#include "ConfigWriter.h"
+#include "widgets/BackupOnce.h"
+#include "core/ConfigParser.h"
+#include "core/ConfigWriter.h"
 
 #include <QUndoCommand>
 

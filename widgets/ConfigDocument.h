@@ -3,8 +3,8 @@
 // is saved. Every editor changes it through setValue() (one undoable command per change), so
 // the GUI never keeps a parallel copy. Loading and saving go through the core's parser and
 // atomic writer; a failed load leaves the current config untouched.
-#include "Config.h"
-#include "ConfigSchema.h"
+#include "core/Config.h"
+#include "core/ConfigSchema.h"
 
 #include <QObject>
 #include <QString>

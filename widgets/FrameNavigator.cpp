@@ -1,6 +1,6 @@
-#include "FrameNavigator.h"
+#include "widgets/FrameNavigator.h"
 
-#include "MarkedSlider.h"
+#include "widgets/MarkedSlider.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -3,7 +3,7 @@
 // a frame number box, loop and playback speed. It asks for frames (frameRequested); the
 // window decides what showing one means. The slider carries marks (FrameMark.h): where a
 // ball was detected, where a config change made one appear or vanish.
-#include "FrameMark.h"
+#include "widgets/FrameMark.h"
 
 #include <QWidget>
 

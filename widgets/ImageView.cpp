@@ -1,6 +1,6 @@
-#include "ImageView.h"
+#include "widgets/ImageView.h"
 
-#include "BallModel.h"
+#include "core/BallModel.h"
 
 #include <QMouseEvent>
 #include <QPainter>

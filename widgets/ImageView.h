@@ -3,8 +3,8 @@
 // at the cursor, a drag pans (all panes follow through the shared ViewTransform). In marking
 // mode the left button marks (press, drag, release are reported in image px) and the middle
 // button pans.
-#include "Overlay.h"
-#include "ViewTransform.h"
+#include "widgets/Overlay.h"
+#include "widgets/ViewTransform.h"
 
 #include <QImage>
 #include <QWidget>

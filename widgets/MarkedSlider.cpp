@@ -1,4 +1,4 @@
-#include "MarkedSlider.h"
+#include "widgets/MarkedSlider.h"
 
 #include <QHelpEvent>
 #include <QPainter>

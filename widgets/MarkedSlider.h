@@ -4,7 +4,7 @@
 // detections and ground truth below, so a run of thousands of frames still reads at a glance
 // on a 1366 px screen. Marks from an earlier config can be flagged outdated: they are drawn
 // faint and the tooltip says why, so stale results never pass for current ones.
-#include "FrameMark.h"
+#include "widgets/FrameMark.h"
 
 #include <QSlider>
 

@@ -1,4 +1,4 @@
-#include "NoticeBar.h"
+#include "widgets/NoticeBar.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

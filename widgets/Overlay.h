@@ -1,9 +1,9 @@
 #pragma once
 // What the panes draw over the images, and which of it is switched on.
-#include "BallCandidate.h"
-#include "Config.h"
-#include "MaskOutline.h"
-#include "PipelineResult.h"
+#include "core/BallCandidate.h"
+#include "core/Config.h"
+#include "calib/mask/MaskOutline.h"
+#include "core/PipelineResult.h"
 
 #include <memory>
 #include <vector>

@@ -1,6 +1,6 @@
-#include "PipelineRunner.h"
+#include "widgets/PipelineRunner.h"
 
-#include "Pipeline.h"
+#include "core/Pipeline.h"
 
 #include <QMutex>
 

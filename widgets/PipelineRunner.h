@@ -2,11 +2,11 @@
 // Reads frames and runs the pipeline off the GUI thread. Requests replace each other: while one
 // frame is being processed only the newest request waits, so dragging a slider never queues
 // stale work and the window never blocks on decoding a frame or on the detector.
-#include "Config.h"
-#include "FrameSource.h"
-#include "MaskOutline.h"
-#include "PipelineResult.h"
-#include "PixelFormat.h"
+#include "core/Config.h"
+#include "calib/source/FrameSource.h"
+#include "calib/mask/MaskOutline.h"
+#include "core/PipelineResult.h"
+#include "core/PixelFormat.h"
 
 #include <QObject>
 #include <QThread>

@@ -1,4 +1,4 @@
-#include "PipelineView.h"
+#include "widgets/PipelineView.h"
 
 #include <QGridLayout>
 

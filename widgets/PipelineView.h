@@ -1,8 +1,8 @@
 #pragma once
 // The five stage panes of thesis Fig. 4.6 plus the Hough accumulator, side by side under one
 // zoom/pan. Double-clicking a pane enlarges it; double-clicking again brings the others back.
-#include "ImageView.h"
-#include "PipelineRunner.h"
+#include "widgets/ImageView.h"
+#include "widgets/PipelineRunner.h"
 
 #include <QWidget>
 

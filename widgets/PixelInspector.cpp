@@ -1,7 +1,7 @@
-#include "PixelInspector.h"
+#include "widgets/PixelInspector.h"
 
-#include "ColorClass.h"
-#include "DistanceMap.h"
+#include "core/ColorClass.h"
+#include "core/DistanceMap.h"
 
 #include <opencv2/imgproc.hpp>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The status-bar line for the pixel under the cursor: image x/y, BGR, HSV, colour class,
 // distance to the robot centre in px and metres, and whether the pixel is processed.
-#include "PipelineRunner.h"
+#include "widgets/PipelineRunner.h"
 
 #include <QString>
 

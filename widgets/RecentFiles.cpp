@@ -1,4 +1,4 @@
-#include "RecentFiles.h"
+#include "widgets/RecentFiles.h"
 
 #include <QAction>
 #include <QDir>

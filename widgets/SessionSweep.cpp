@@ -1,11 +1,11 @@
-#include "SessionSweep.h"
+#include "widgets/SessionSweep.h"
 
-#include "BatchRun.h"
-#include "ConfigParser.h"
-#include "ConfigWriter.h"
-#include "FrameSourceFactory.h"
-#include "Pipeline.h"
-#include "Progress.h"
+#include "calib/eval/BatchRun.h"
+#include "core/ConfigParser.h"
+#include "core/ConfigWriter.h"
+#include "calib/source/FrameSourceFactory.h"
+#include "core/Pipeline.h"
+#include "core/Progress.h"
 
 #include <QElapsedTimer>
 #include <QThread>

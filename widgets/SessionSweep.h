@@ -4,11 +4,11 @@
 // positives (with truth), timing and what changed frame by frame. It opens its own
 // FrameSource (sources are single-threaded and the window holds one), reads each frame once
 // and runs both pipelines on it, so a cancelled sweep still compares the same frames.
-#include "Config.h"
-#include "Evaluation.h"
-#include "FrameMark.h"
-#include "SessionComparison.h"
-#include "TruthCsv.h"
+#include "core/Config.h"
+#include "calib/eval/Evaluation.h"
+#include "widgets/FrameMark.h"
+#include "calib/eval/SessionComparison.h"
+#include "calib/session/TruthCsv.h"
 
 #include <QObject>
 #include <QString>

@@ -1,6 +1,6 @@
-#include "SessionSweepDialog.h"
+#include "widgets/SessionSweepDialog.h"
 
-#include "FrameNavigator.h"
+#include "widgets/FrameNavigator.h"
 
 #include <QDialogButtonBox>
 #include <QFileInfo>

@@ -3,7 +3,7 @@
 // runs, then the numbers of the current config beside the saved one (frames, balls found,
 // detection ratio and false positives when there is truth, time per frame) and the frames
 // that changed, each a click away on the frame navigator. Non-modal: tuning goes on beside it.
-#include "SessionSweep.h"
+#include "widgets/SessionSweep.h"
 
 #include <QDialog>
 

@@ -1,6 +1,6 @@
-#include "ThresholdPanel.h"
+#include "widgets/ThresholdPanel.h"
 
-#include "ConfigDocument.h"
+#include "widgets/ConfigDocument.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -5,7 +5,7 @@
 // a refused edit puts the editor back and shows why. Document changes (undo, redo, load) update
 // the editors without editing again, except one the user is typing in: it follows the document
 // when it loses focus.
-#include "ConfigSchema.h"
+#include "core/ConfigSchema.h"
 
 #include <QHash>
 #include <QList>

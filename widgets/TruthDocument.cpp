@@ -1,8 +1,8 @@
-#include "TruthDocument.h"
+#include "widgets/TruthDocument.h"
 
-#include "BackupOnce.h"
-#include "ConfigWriter.h"
-#include "Session.h"
+#include "widgets/BackupOnce.h"
+#include "core/ConfigWriter.h"
+#include "calib/session/Session.h"
 
 #include <QDir>
 #include <QFile>

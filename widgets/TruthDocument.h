@@ -3,7 +3,7 @@
 // Every change is written at once, atomically, so a crash or a closed laptop loses no mark;
 // the file as it was when the program first opened it is kept as truth.csv.bak (written on
 // the first change only, so later saves, and reopening the session, never overwrite it).
-#include "TruthCsv.h"
+#include "calib/session/TruthCsv.h"
 
 #include <QObject>
 #include <QString>

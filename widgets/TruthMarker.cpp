@@ -1,9 +1,9 @@
-#include "TruthMarker.h"
+#include "widgets/TruthMarker.h"
 
-#include "BallModel.h"
-#include "BallPosition.h"
-#include "PipelineView.h"
-#include "TruthDocument.h"
+#include "core/BallModel.h"
+#include "core/BallPosition.h"
+#include "widgets/PipelineView.h"
+#include "widgets/TruthDocument.h"
 
 #include <QAction>
 #include <QMenu>

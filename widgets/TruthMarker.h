@@ -4,9 +4,9 @@
 // hand, one key accepts the detector's result (ball or no ball) as truth, one marks "no ball",
 // and each of these moves on to the next frame, so a tour of hundreds of frames is a click or
 // a key per frame. The marks go to the session's truth.csv through TruthDocument.
-#include "Overlay.h"
-#include "PipelineRunner.h"
-#include "TruthCsv.h"
+#include "widgets/Overlay.h"
+#include "widgets/PipelineRunner.h"
+#include "calib/session/TruthCsv.h"
 
 #include <QObject>
 #include <QPointF>

@@ -1,4 +1,4 @@
-#include "ViewTransform.h"
+#include "widgets/ViewTransform.h"
 
 #include <algorithm>
 
