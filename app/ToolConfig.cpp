@@ -2,6 +2,7 @@
 
 #include "core/ConfigParser.h"
 #include "calib/session/Session.h"
+#include "calib/session/SessionReader.h"
 
 #include <opencv2/core/utils/logger.hpp>
 
@@ -13,19 +14,37 @@ namespace omnitune {
 void quietOpenCvLogs() { cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_ERROR); }
 
 std::optional<Config> loadToolConfig(const std::optional<std::string>& configPath, const std::string& inputPath,
-                                     const std::optional<std::string>& algorithm, std::string& error)
+                                     const std::optional<std::string>& algorithm, std::string& error,
+                                     std::string* usedPath)
 {
     std::string path;
     if (configPath) {
         path = *configPath;
     } else {
-        const auto candidate = std::filesystem::path(inputPath) / kSessionConfigFile;
-        if (!std::filesystem::is_regular_file(candidate)) {
-            error = "no --config given and " + inputPath + " holds no " + std::string(kSessionConfigFile);
+        // A session runs with the config SessionReader names (calib/session/SessionConfig.h),
+        // the same one the window opens.
+        namespace fs = std::filesystem;
+        const fs::path input(inputPath);
+        std::error_code ec;
+        const fs::path folder = input.filename() == kSessionInfoFile ? input.parent_path() : input;
+        const bool isSession = fs::is_directory(folder, ec) && (fs::exists(folder / kSessionInfoFile, ec) ||
+                                                                fs::is_directory(folder / kSessionFramesDir, ec));
+        if (isSession) {
+            const SessionOpen session = SessionReader::open(folder.empty() ? "." : folder.string());
+            if (session.ok()) path = session.reader->configPath();
+            if (path.empty()) {
+                error = "no --config given and the session " + inputPath + " has no config: " +
+                        (session.ok() && session.reader->configIssue() ? session.reader->configIssue()->toString()
+                                                                       : "no " + std::string(kSessionConfigFile) + " in it");
+                return std::nullopt;
+            }
+        } else {
+            error = "no --config given and " + inputPath + " is not a session folder with a " +
+                    std::string(kSessionConfigFile);
             return std::nullopt;
         }
-        path = candidate.string();
     }
+    if (usedPath) *usedPath = path;
     ConfigLoad load = loadConfig(path);
     for (const auto& w : load.warnings) std::cerr << "warning: " << w.toString() << "\n";
     if (!load.ok()) {

@@ -30,6 +30,20 @@ int fail(const std::string& why)
     return 1;
 }
 
+// Why a session gives no truth to evaluate against: no truth.csv, or one without a usable row.
+std::string whyNoTruth(const SessionReader& session)
+{
+    const std::string path = (std::filesystem::path(session.folder()) / kSessionTruthFile).string();
+    if (!session.hasTruthFile())
+        return session.folder() + " has no truth.csv (mark the ball first, or use omnitune-detect)";
+    std::string reasons;
+    int shown = 0;
+    for (const SessionIssue& w : session.warnings())
+        if (w.file == path && shown++ < 3) reasons += (reasons.empty() ? "" : "; ") + w.toString();
+    return path + " holds " + std::to_string(session.truthRowsInFile()) +
+           " rows but none is usable" + (reasons.empty() ? "" : ": " + reasons);
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -59,11 +73,12 @@ int main(int argc, char** argv)
         algorithms = {algorithm};
 
     std::vector<EvaluationRow> rows;
+    bool allEvaluated = true;
     for (const std::string& dir : cl.all("session")) {
         SessionOpen opened = SessionReader::open(dir);
         if (!opened.ok()) return fail(opened.error->toString());
         for (const auto& w : opened.reader->warnings()) std::cerr << "warning: " << w.toString() << "\n";
-        if (opened.reader->truth().empty()) return fail(dir + " has no truth.csv (mark the ball first, or use omnitune-detect)");
+        if (opened.reader->truth().empty()) return fail(whyNoTruth(*opened.reader));
         const auto truth = opened.reader->truth();
         const std::string name = std::filesystem::path(dir).filename().string();
         for (const std::string& a : algorithms) {
@@ -72,12 +87,14 @@ int main(int argc, char** argv)
             if (!config) return fail(error);
             SessionSource source(*opened.reader);
             std::vector<FrameOutcome> outcomes;
+            std::string firstFailure;
             try {
                 Pipeline pipeline(*config);
                 StderrProgress progress("omnitune-eval " + name + " " + std::string(algorithmName(config->algorithm)));
                 runBatch(source, pipeline,
                          [&](int index, const Frame*, const PipelineResult& r) {
                              if (!r.ok()) std::cerr << "frame " << index << " skipped: " << r.error << "\n";
+                             if (!r.ok() && firstFailure.empty()) firstFailure = r.error;
                              outcomes.push_back(outcomeOf(index, r));
                          },
                          &progress);
@@ -87,9 +104,21 @@ int main(int argc, char** argv)
             EvaluationRow row = evaluate(outcomes, truth, options);
             row.session = name;
             row.algorithm = std::string(algorithmName(config->algorithm));
+            // A row of zeros would read as "the detector found nothing": say what went wrong instead.
+            if (row.frames == 0 || row.annotated == 0) {
+                std::cerr << "omnitune-eval: " << dir << " (" << row.algorithm << "): nothing evaluated: "
+                          << (row.frames == 0 ? "none of its " + std::to_string(outcomes.size()) +
+                                                    " frames could be processed" +
+                                                    (firstFailure.empty() ? "" : " (first: " + firstFailure + ")")
+                                              : "no processed frame has a truth row")
+                          << "\n";
+                allEvaluated = false;
+                continue;
+            }
             rows.push_back(row);
         }
     }
-    std::cout << (format == "md" ? evaluationMarkdown(rows) : evaluationCsv(rows));
+    if (!rows.empty()) std::cout << (format == "md" ? evaluationMarkdown(rows) : evaluationCsv(rows));
+    if (!allEvaluated) return 1;
     return 0;
 }

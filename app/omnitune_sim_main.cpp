@@ -2,10 +2,9 @@
 // folder with truth.csv and the config it was rendered with.
 #include "app/CommandLine.h"
 #include "app/ToolConfig.h"
-#include "calib/sim/SceneSimulator.h"
-#include "calib/session/SessionWriter.h"
 #include "app/StderrProgress.h"
-#include "calib/sim/Tour.h"
+#include "calib/session/Session.h"
+#include "calib/sim/TourRecording.h"
 
 #include <cmath>
 #include <cstdio>
@@ -64,7 +63,8 @@ int main(int argc, char** argv)
     if (!cl.error.empty()) return fail(cl.error + " (see --help)");
     if (!cl.has("out")) return fail("--out is required (see --help)");
 
-    TourOptions tour;
+    TourRecordingOptions recording;
+    TourOptions& tour = recording.tour;
     if (auto b = cl.value("ball")) {
         const auto kind = parseBallKind(*b);
         if (!kind) return fail("unknown --ball '" + *b + "' (see --help)");
@@ -90,8 +90,6 @@ int main(int argc, char** argv)
         }
     };
     int seed = int(tour.seed);
-    double motionBlur = 0.0;
-    double occlusion = 0.0;
     try {
         integer("frames", 1, 100000, tour.frames);
         integer("seed", 0, 2147483647, seed);
@@ -100,16 +98,12 @@ int main(int argc, char** argv)
         number("light", 0.05, 5, tour.lightLevel);
         number("gradient", 0, 1, tour.lightGradient);
         number("noise", 0, 100, tour.noiseSigma);
-        number("motion-blur", 0, 50, motionBlur);
-        number("occlusion", 0, 0.9, occlusion);
+        number("motion-blur", 0, 50, recording.motionBlurPx);
+        number("occlusion", 0, 0.9, recording.occlusion);
+        integer("compression", 0, 9, recording.writer.pngCompression);
     } catch (const std::invalid_argument& e) {
         return fail(e.what());
     }
-    tour.seed = unsigned(seed);
-    tour.shadow = cl.has("shadow");
-    tour.feet = cl.has("feet");
-    tour.obstacles = !cl.has("no-obstacles");
-
     Config config;
     if (cl.has("config")) {
         std::string error;
@@ -118,57 +112,19 @@ int main(int argc, char** argv)
         config = *loaded;
     }
 
+    recording.tour.seed = unsigned(seed);
+    recording.tour.shadow = cl.has("shadow");
+    recording.tour.feet = cl.has("feet");
+    recording.tour.obstacles = !cl.has("no-obstacles");
+    recording.ballPresent = !cl.has("no-ball");
+    recording.writer.overwrite = cl.has("overwrite");
+    const std::string out = *cl.value("out");
+    if (!cl.has("overwrite") && std::filesystem::exists(std::filesystem::path(out) / kSessionInfoFile))
+        return fail(out + " already holds a session: choose another folder or pass --overwrite");
     try {
-        const SceneSimulator sim(config);
-        std::vector<SceneOptions> scenes = makeTour(tour);
-        SessionInfo info;
-        info.camera = config.camera;
-        info.camera.model = "omnitune-sim";
-        info.width = config.geometry.imageWidth;
-        info.height = config.geometry.imageHeight;
-        info.frameRate = config.camera.frameRate;
-        info.notes = "omnitune-sim: ball " + std::string(ballKindName(tour.ball)) + (cl.has("no-ball") ? " (left out)" : "") +
-                     ", " + std::to_string(tour.frames) + " frames, seed " + std::to_string(tour.seed) +
-                     (tour.shadow ? ", head shadow" : "") + (tour.feet ? ", feet" : "") +
-                     (tour.obstacles ? "" : ", no obstacles") +
-                     (motionBlur > 0 ? ", motion blur " + std::to_string(motionBlur) + " px" : "") +
-                     (occlusion > 0 ? ", occlusion " + std::to_string(occlusion) : "");
-        const std::string out = *cl.value("out");
-        if (!cl.has("overwrite") && std::filesystem::exists(std::filesystem::path(out) / kSessionInfoFile))
-            return fail(out + " already holds a session: choose another folder or pass --overwrite");
-        SessionWriterOptions writerOptions;
-        writerOptions.overwrite = cl.has("overwrite");
-        if (auto level = cl.value("compression")) {
-            const auto v = parseInt(*level);
-            if (!v || *v < 0 || *v > 9) return fail("--compression must be 0..9, not '" + *level + "'");
-            writerOptions.pngCompression = *v;
-        }
-        SessionCreate created = SessionWriter::create(out, info, writerOptions);
-        if (!created.writer) return fail(created.error->toString());
-        SessionWriter& writer = *created.writer;
-        if (auto err = writer.writeConfig(config)) return fail(err->toString());
         StderrProgress progress("omnitune-sim");
-        for (std::size_t i = 0; i < scenes.size(); ++i) {
-            SceneOptions& scene = scenes[i];
-            scene.ballPresent = !cl.has("no-ball");
-            scene.motionBlurPx = motionBlur;
-            scene.occlusion = occlusion;
-            GroundTruth truth;
-            const cv::Mat image = sim.render(scene, &truth);
-            TruthRow row;
-            row.ballVisible = truth.ballVisible;
-            if (truth.ballVisible) {
-                row.px = truth.px;
-                row.py = truth.py;
-                row.radiusPx = truth.radiusPx;
-                row.xM = truth.xM;
-                row.yM = truth.yM;
-            }
-            row.robot = truth.pose;
-            if (auto err = writer.appendFrame(image, row)) return fail(err->toString());
-            progress.update(100.0 * double(i + 1) / double(scenes.size()));
-        }
-        if (auto err = writer.finish()) return fail(err->toString());
+        const TourRecordingResult result = recordTour(out, config, recording, &progress);
+        if (!result.ok()) return fail(result.error->toString());
     } catch (const std::exception& e) {
         return fail(e.what());
     }

@@ -594,7 +594,7 @@ private slots:
         for (int f : {0, 1, 2, 5, 11, 12, 40}) rows[f] = truthFor(f);
         rows[12].px = 0.1;
         rows[12].yM = -1e-7;
-        rows[12].radiusPx = 123456.789;
+        rows[12].radiusPx = 12.3456789;
         const std::string text = serializeTruthCsv(rows);
         QVERIFY(text.rfind("frame,ball_visible,px,py,radius_px,x_m,y_m,robot_x,robot_y,robot_heading\n", 0) == 0);
         QVERIFY(text.find("\n2,0,,,,,,1.25,-3.5,0.2") != std::string::npos);  // invisible: ball cells empty

@@ -162,8 +162,8 @@ const std::vector<InfoKey>& infoKeys()
                      cameraIntKey("camera.white_balance_red", &CameraSettings::whiteBalanceRed)});
         k.push_back({"camera", "gain", true, cameraIntKey("camera.gain", &CameraSettings::gain)});
         k.push_back({"camera", "brightness", true, cameraIntKey("camera.brightness", &CameraSettings::brightness)});
-        k.push_back({"", "frame_width", true, infoIntKey(0, 100000, &SessionInfo::width)});
-        k.push_back({"", "frame_height", true, infoIntKey(0, 100000, &SessionInfo::height)});
+        k.push_back({"", "frame_width", true, infoIntKey(0, kSessionMaxFrameSide, &SessionInfo::width)});
+        k.push_back({"", "frame_height", true, infoIntKey(0, kSessionMaxFrameSide, &SessionInfo::height)});
         k.push_back({"", "pixel_format", true,
                      [](const cv::FileNode& n, SessionInfo& info) -> std::optional<SessionIssue> {
                          if (!n.isString())
@@ -181,6 +181,13 @@ const std::vector<InfoKey>& infoKeys()
         k.push_back({"", "frame_rate", true, rateKey(0.0, 10000.0, true, [](SessionInfo& i) -> double& { return i.frameRate; })});
         k.push_back({"", "notes", false, textKey([](SessionInfo& i) -> std::string& { return i.notes; })});
         k.push_back({"", "config_file", false, textKey([](SessionInfo& i) -> std::string& { return i.configFile; })});
+        k.push_back({"", "complete", false, [](const cv::FileNode& n, SessionInfo& info) -> std::optional<SessionIssue> {
+                         const std::string v = n.isString() ? std::string(n) : std::string();
+                         if (v != "true" && v != "false")
+                             return keyIssue(SessionIssueKind::WrongType, "expected true or false, found " + typeOf(n));
+                         info.complete = v == "true";
+                         return std::nullopt;
+                     }});
         return k;
     }();
     return keys;
@@ -287,6 +294,7 @@ std::string serializeSessionInfo(const SessionInfo& info)
     fs << "frame_rate" << info.frameRate;
     fs << "notes" << info.notes;
     if (!info.configFile.empty()) fs << "config_file" << info.configFile;
+    if (info.complete) fs << "complete" << std::string(*info.complete ? "true" : "false");
     return fs.releaseAndGetString();
 }
 

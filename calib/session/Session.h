@@ -24,6 +24,9 @@ inline constexpr std::string_view kSessionFramesDir = "frames";
 inline constexpr std::string_view kSessionTruthFile = "truth.csv";
 inline constexpr std::string_view kSessionConfigFile = "config.yml";
 inline constexpr int kSessionMaxFrames = 1000000;  // six-digit frame names: 000000..999999
+// px: the largest frame side a session may state (frame_width, frame_height); truth.csv values
+// of a session whose size is unknown are checked against it.
+inline constexpr int kSessionMaxFrameSide = 100000;
 
 struct SessionInfo {
     CameraSettings camera;                        // the camera as set while recording
@@ -35,6 +38,10 @@ struct SessionInfo {
     std::string notes;                            // free text, may span lines
     std::string created;                          // ISO 8601 UTC, "2024-05-01T14:03:00Z"
     std::string configFile;                       // "config.yml" when the session carries one; empty otherwise
+    // true: the recorder closed the session (SessionWriter::finish); false: written while
+    // recording, so a session still saying false was interrupted; empty: the file does not
+    // say (written by hand or by an older build).
+    std::optional<bool> complete;
 };
 
 struct SessionInfoParse {

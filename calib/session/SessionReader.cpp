@@ -1,9 +1,11 @@
 #include "calib/session/SessionReader.h"
 
+#include "calib/session/SessionConfig.h"
 #include "calib/source/ImageFile.h"
 
 #include <opencv2/imgcodecs.hpp>
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <fstream>
@@ -26,20 +28,50 @@ std::optional<std::string> readText(const fs::path& path)
     return buffer.str();
 }
 
-// The frame numbers present in frames/: names exactly as sessionFrameName() makes them.
-std::set<int> framesOnDisk(const fs::path& framesDir)
-{
+// What frames/ holds: the frame numbers named exactly as sessionFrameName() makes them, and
+// the names numbered past kSessionMaxFrames (refused, never counted).
+struct FramesOnDisk {
     std::set<int> present;
+    std::vector<std::string> pastLimit;
+};
+
+FramesOnDisk framesOnDisk(const fs::path& framesDir)
+{
+    FramesOnDisk out;
     std::error_code ec;
     for (fs::directory_iterator it(framesDir, ec), end; !ec && it != end; it.increment(ec)) {
         const std::string name = it->path().filename().string();
         if (name.size() < 10 || name.compare(name.size() - 4, 4, ".png") != 0) continue;
         const std::string digits = name.substr(0, name.size() - 4);
-        if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+        if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
+        if (digits.size() > 6) {  // "1000000.png", "999999999.png": past the six-digit names
+            if (digits[0] != '0') out.pastLimit.push_back(name);
+            continue;
+        }
         const int index = std::stoi(digits);
-        if (sessionFrameName(index) == name) present.insert(index);
+        if (sessionFrameName(index) == name) out.present.insert(index);
     }
-    return present;
+    std::sort(out.pastLimit.begin(), out.pastLimit.end());
+    return out;
+}
+
+// The frames that belong to the session: every frame below session.yml's frame_count, then
+// the run that continues them without a gap (the recorder writes in order, so what an
+// interruption leaves past a stale frame_count is such a run). Anything further is a stray
+// file; counting it would make one "frames/999999999.png" a billion-frame session.
+std::set<int> sessionFrames(const std::set<int>& present, int frameCountInInfo, std::vector<int>& strays)
+{
+    std::set<int> kept(present.begin(), present.lower_bound(frameCountInInfo));
+    int next = std::max(frameCountInInfo, 0);
+    if (!kept.empty()) next = std::max(next, *kept.rbegin() + 1);
+    for (auto it = present.lower_bound(next); it != present.end(); ++it) {
+        if (*it == next) {
+            kept.insert(next++);
+            continue;
+        }
+        strays.push_back(*it);
+    }
+    return kept;
 }
 
 // A PNG written to the end starts with the signature and ends with the IEND chunk; a crash
@@ -55,6 +87,14 @@ bool isCompletePng(const fs::path& path)
     if (!in.read(reinterpret_cast<char*>(head.data()), head.size()) || head != signature) return false;
     in.seekg(-std::streamoff(tail.size()), std::ios::end);
     return in.read(reinterpret_cast<char*>(tail.data()), tail.size()) && tail == iend;
+}
+
+std::string nameList(const std::vector<std::string>& names, std::size_t shown)
+{
+    std::string s;
+    for (std::size_t i = 0; i < names.size() && i < shown; ++i) s += (s.empty() ? "" : ", ") + names[i];
+    if (names.size() > shown) s += " and " + std::to_string(names.size() - shown) + " more";
+    return s;
 }
 
 std::string frameList(const std::vector<int>& indices, std::size_t total)
@@ -108,7 +148,21 @@ SessionOpen SessionReader::open(const std::string& folder)
         }
     }
 
-    std::set<int> present = haveFrames ? framesOnDisk(framesDir) : std::set<int>{};
+    const FramesOnDisk disk = haveFrames ? framesOnDisk(framesDir) : FramesOnDisk{};
+    if (!disk.pastLimit.empty())
+        r.warnings_.push_back({SessionIssueKind::FrameCountMismatch, framesDir.string(), 0, "",
+                               nameList(disk.pastLimit, 5) + (disk.pastLimit.size() == 1 ? " is" : " are") +
+                                   " numbered past the limit of " + std::to_string(kSessionMaxFrames) +
+                                   " frames (000000.png..999999.png); ignored"});
+    std::vector<int> strays;
+    std::set<int> present = sessionFrames(disk.present, r.hasInfoFile_ ? r.info_.frameCount : 0, strays);
+    if (!strays.empty())
+        r.warnings_.push_back({SessionIssueKind::FrameCountMismatch, framesDir.string(), 0, "",
+                               frameList({strays.begin(), strays.begin() + std::min<std::size_t>(strays.size(), 5)},
+                                         strays.size()) +
+                                   (strays.size() == 1 ? " lies" : " lie") + " past the session's " +
+                                   std::to_string(present.empty() ? 0 : *present.rbegin() + 1) +
+                                   " frames without continuing them (a stray file?); ignored"});
     if (!present.empty()) {
         const int last = *present.rbegin();
         const fs::path lastPath = framesDir / sessionFrameName(last);
@@ -121,6 +175,10 @@ SessionOpen SessionReader::open(const std::string& folder)
         }
     }
     const int onDisk = present.empty() ? 0 : *present.rbegin() + 1;
+    if (r.hasInfoFile_ && r.info_.complete == false)
+        r.warnings_.push_back({SessionIssueKind::FrameCountMismatch, infoPath.string(), 0, "complete",
+                               "the recording was not closed (complete: false): it was interrupted, frames/ holds " +
+                                   std::to_string(onDisk) + " frames and the last moments may be missing"});
     if (!r.hasInfoFile_ && !haveInfo)
         r.warnings_.push_back({SessionIssueKind::MissingInfo, infoPath.string(), 0, "",
                                "missing (the recording was interrupted before writing it?): counted " +
@@ -154,12 +212,15 @@ SessionOpen SessionReader::open(const std::string& folder)
 
     const fs::path truthPath = dir / kSessionTruthFile;
     if (fs::exists(truthPath, ec)) {
+        r.hasTruthFile_ = true;
         const auto text = readText(truthPath);
         if (!text) {
             r.warnings_.push_back({SessionIssueKind::FileUnreadable, truthPath.string(), 0, "",
                                    "cannot be read; the session has no ground truth"});
         } else {
-            TruthParse parsed = parseTruthCsv(*text, truthPath.string());
+            // Values outside the frames are refused here, before anything draws or averages them.
+            TruthParse parsed = parseTruthCsv(*text, truthPath.string(), TruthLimits{{r.info_.width, r.info_.height}});
+            r.truthRowsInFile_ = parsed.dataRows;
             r.warnings_.insert(r.warnings_.end(), parsed.warnings.begin(), parsed.warnings.end());
             if (!parsed.ok()) {
                 SessionIssue w = *parsed.error;
@@ -178,16 +239,10 @@ SessionOpen SessionReader::open(const std::string& folder)
         }
     }
 
-    if (!r.info_.configFile.empty()) {
-        const fs::path config = dir / r.info_.configFile;
-        if (fs::exists(config, ec))
-            r.configPath_ = config.string();
-        else
-            r.warnings_.push_back({SessionIssueKind::MissingConfig, infoPath.string(), 0, "config_file",
-                                   "names " + r.info_.configFile + ", which is not in the session folder"});
-    } else if (fs::exists(dir / kSessionConfigFile, ec)) {
-        r.configPath_ = (dir / kSessionConfigFile).string();
-    }
+    SessionConfigChoice config = sessionConfigPath(folder, r.info_.configFile, infoPath.string());
+    r.configPath_ = config.path;
+    if (config.issue) r.warnings_.push_back(*config.issue);
+    r.configIssue_ = config.issue;
 
     out.reader.emplace(std::move(r));
     return out;

@@ -48,13 +48,19 @@ public:
 
     // Ground truth by frame; empty when the session has no (usable) truth.csv.
     const std::map<int, TruthRow>& truth() const { return truth_; }
+    // Whether truth.csv exists (truth() may still be empty: unreadable, or no usable row) and
+    // how many data lines it holds; the warnings say what is wrong with the rest.
+    bool hasTruthFile() const { return hasTruthFile_; }
+    int truthRowsInFile() const { return truthRowsInFile_; }
     // The row for `frame`, or nullptr when that frame is not annotated.
     const TruthRow* truthFor(int frame) const;
 
     bool hasConfig() const { return !configPath_.empty(); }
-    // The session's config file (session.yml's config_file, else config.yml when present);
-    // empty when none.
+    // The session's config file by the one rule of SessionConfig.h (session.yml's config_file
+    // inside the folder, else config.yml when present); empty when none.
     const std::string& configPath() const { return configPath_; }
+    // Why session.yml's config_file was not used; empty when it was, or named none.
+    const std::optional<SessionIssue>& configIssue() const { return configIssue_; }
 
 private:
     SessionReader() = default;
@@ -64,7 +70,10 @@ private:
     bool hasInfoFile_ = false;
     std::vector<SessionIssue> warnings_;
     std::map<int, TruthRow> truth_;
+    bool hasTruthFile_ = false;
+    int truthRowsInFile_ = 0;
     std::string configPath_;
+    std::optional<SessionIssue> configIssue_;
 };
 
 struct SessionOpen {

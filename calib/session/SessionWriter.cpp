@@ -73,6 +73,7 @@ SessionCreate SessionWriter::create(const std::string& folder, const SessionInfo
     w.info_ = info;
     w.info_.frameCount = 0;
     if (w.info_.created.empty()) w.info_.created = isoUtcNow();
+    w.info_.complete = false;  // until finish(): a session killed mid-recording says so
     w.options_ = options;
     w.finished_ = false;
     if (auto err = w.writeInfo()) {
@@ -198,6 +199,7 @@ std::optional<SessionIssue> SessionWriter::finish()
 {
     if (finished_) return std::nullopt;
     finished_ = true;
+    info_.complete = true;
     std::optional<SessionIssue> problem = writeInfo();
     if (truth_.is_open()) {
         truth_.close();

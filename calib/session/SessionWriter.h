@@ -2,7 +2,9 @@
 // Recording a session folder (docs/sessions.md). Each frame is written as
 // frames/NNNNNN.png through a temporary file, flushed and renamed, and session.yml is
 // rewritten (atomically) every few frames, so a crash or a pulled battery loses at most the
-// frame being written; SessionReader opens whatever is left.
+// frame being written; SessionReader opens whatever is left. session.yml says `complete:
+// false` until finish() (or the destructor) closes the session, so a recording killed right
+// after a rewrite is still known to be interrupted.
 #include "calib/session/Session.h"
 #include "calib/session/SessionIssue.h"
 #include "calib/session/TruthCsv.h"
@@ -56,7 +58,7 @@ public:
     // Saves `config` (and its mask) as config.yml in the session and names it in session.yml.
     std::optional<SessionIssue> writeConfig(const Config& config);
 
-    // Writes the final session.yml and closes truth.csv. Later appends are refused.
+    // Writes the final session.yml (complete: true) and closes truth.csv. Later appends are refused.
     std::optional<SessionIssue> finish();
 
     const std::string& folder() const { return folder_; }

@@ -1,5 +1,8 @@
 #include "calib/session/TruthCsv.h"
 
+#include "calib/session/Session.h"
+
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -60,9 +63,38 @@ std::string formatDouble(double v)
     return ec == std::errc() ? std::string(buf, ptr) : std::string("nan");
 }
 
+// The column and reason when a visible ball's centre or radius cannot be in the frame.
+std::optional<std::pair<std::string, std::string>> outsideImage(double px, double py, double r,
+                                                              const TruthLimits& limits)
+{
+    const bool known = limits.frameSize.width > 0 && limits.frameSize.height > 0;
+    const int w = known ? limits.frameSize.width : kSessionMaxFrameSide;
+    const int h = known ? limits.frameSize.height : kSessionMaxFrameSide;
+    const std::string frame = known ? "the " + std::to_string(w) + "x" + std::to_string(h) + " frame"
+                                    : std::string("0..") + std::to_string(kSessionMaxFrameSide) +
+                                          " (the frame size is not known; no frame is larger)";
+    if (!(px >= 0 && px < w)) return std::pair{std::string("px"), formatDouble(px) + " is outside " + frame};
+    if (!(py >= 0 && py < h)) return std::pair{std::string("py"), formatDouble(py) + " is outside " + frame};
+    const double maxR = std::min(w, h) / 2.0;
+    if (r > maxR)
+        return std::pair{std::string("radius_px"),
+                         formatDouble(r) + " px does not fit in " +
+                             (known ? frame : "any frame") + " (at most " + formatDouble(maxR) +
+                             " px, half the shorter side)"};
+    return std::nullopt;
+}
+
+// The first metre column whose value lies farther than `maxM`.
+std::optional<int> tooFar(const std::array<std::optional<double>, ColumnCount>& value, double maxM)
+{
+    for (int c : {XM, YM, RobotX, RobotY})
+        if (value[c] && std::abs(*value[c]) > maxM) return c;
+    return std::nullopt;
+}
+
 }  // namespace
 
-TruthParse parseTruthCsv(const std::string& text, const std::string& fileName)
+TruthParse parseTruthCsv(const std::string& text, const std::string& fileName, const TruthLimits& limits)
 {
     TruthParse out;
     std::istringstream in(text);
@@ -118,6 +150,7 @@ TruthParse parseTruthCsv(const std::string& text, const std::string& fileName)
     while (std::getline(in, line)) {
         ++lineNo;
         if (trim(line).empty()) continue;
+        ++out.dataRows;
         const std::vector<std::string> cells = splitCells(line);
         if (cells.size() != header.size()) {
             warn(SessionIssueKind::WrongColumnCount, "",
@@ -172,11 +205,20 @@ TruthParse parseTruthCsv(const std::string& text, const std::string& fileName)
                 warn(SessionIssueKind::BadValue, "radius_px", cell(RadiusPx) + " is not above 0; row skipped");
                 continue;
             }
+            if (const auto why = outsideImage(*value[Px], *value[Py], *value[RadiusPx], limits)) {
+                warn(SessionIssueKind::BadValue, why->first, why->second + "; row skipped");
+                continue;
+            }
             row.px = *value[Px];
             row.py = *value[Py];
             row.radiusPx = *value[RadiusPx];
             row.xM = *value[XM];
             row.yM = *value[YM];
+        }
+        if (const auto far = tooFar(value, limits.maxDistanceM)) {
+            warn(SessionIssueKind::BadValue, kColumnNames[*far],
+                 cell(*far) + " m is farther than " + formatDouble(limits.maxDistanceM) + " m; row skipped");
+            continue;
         }
         if (havePose) {
             const int given = value[RobotX].has_value() + value[RobotY].has_value() + value[RobotHeading].has_value();

@@ -6,6 +6,8 @@
 #include "calib/sim/RobotPose.h"
 #include "calib/session/SessionIssue.h"
 
+#include <opencv2/core.hpp>
+
 #include <map>
 #include <optional>
 #include <string>
@@ -26,8 +28,22 @@ struct TruthRow {
     std::optional<RobotPose> robot;  // field-frame pose (RobotPose.h); empty: unknown
 };
 
+// What a truth value may be. A row outside these is refused (BadValue, with its line), so a
+// typo like radius 1e30 never reaches the window (which would spin drawing it) or the
+// evaluation (which would average it into inf).
+struct TruthLimits {
+    // px of the session's frames; empty when unknown, and then kSessionMaxFrameSide bounds.
+    // The ball centre must lie in the image, and its radius below half the shorter side: a
+    // larger ball would not fit in the frame, whatever the ball model says.
+    cv::Size frameSize;
+    // m: the farthest a ball or a robot may be from the robot or the field centre. No camera
+    // sees a ball a field's diagonal (~25 m) away; the bound only catches garbage.
+    double maxDistanceM = 100.0;
+};
+
 struct TruthParse {
     std::map<int, TruthRow> rows;        // by frame; meaningful only when ok()
+    int dataRows = 0;                    // non-blank lines after the header, usable or not
     std::vector<SessionIssue> warnings;  // one per skipped row or odd column, with its line
     std::optional<SessionIssue> error;   // the header is missing or lacks a required column
 
@@ -35,7 +51,7 @@ struct TruthParse {
 };
 
 // `fileName` only labels the messages.
-TruthParse parseTruthCsv(const std::string& text, const std::string& fileName);
+TruthParse parseTruthCsv(const std::string& text, const std::string& fileName, const TruthLimits& limits = {});
 
 // "frame,ball_visible,px,py,radius_px,x_m,y_m,robot_x,robot_y,robot_heading" (no newline).
 std::string truthCsvHeader();

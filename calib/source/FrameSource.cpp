@@ -1,5 +1,7 @@
 #include "calib/source/FrameSource.h"
 
+#include <filesystem>
+
 namespace omnitune {
 
 std::optional<FrameError> FrameSource::read(int index, Frame& out)
@@ -25,6 +27,14 @@ std::optional<FrameError> FrameSource::read(int index, Frame& out)
     }
     out.index = index;
     return std::nullopt;
+}
+
+bool FrameSource::readsFile(const std::string&) const { return false; }
+
+bool sameFile(const std::string& a, const std::string& b)
+{
+    std::error_code ec;
+    return !a.empty() && !b.empty() && std::filesystem::equivalent(a, b, ec) && !ec;
 }
 
 }  // namespace omnitune

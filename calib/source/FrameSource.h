@@ -49,6 +49,11 @@ public:
     // The index kNext stands for now.
     int nextIndex() const { return next_; }
 
+    // Whether `path` is a file this source reads (a frame, a video, a session's session.yml,
+    // truth.csv or config), by identity on disk (sameFile), so a tool refuses to write onto
+    // its own input.
+    virtual bool readsFile(const std::string& path) const;
+
 protected:
     // `index` is >= 0, below frameCount() when that is known, and equal to nextIndex() when the
     // source is not seekable. Sets everything in `out` but `index`.
@@ -57,6 +62,9 @@ protected:
 private:
     int next_ = 0;
 };
+
+// Whether `a` and `b` are one existing file (same device and inode: links and "x/../x" count).
+bool sameFile(const std::string& a, const std::string& b);
 
 // What opening a source gives: the source, or an error naming the path and the fault; plus
 // warnings about a source that opened but is not quite right (an interrupted session, ...).

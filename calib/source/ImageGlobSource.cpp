@@ -19,6 +19,11 @@ bool isDigit(char c) { return c >= '0' && c <= '9'; }
 
 }  // namespace
 
+bool ImageGlobSource::readsFile(const std::string& path) const
+{
+    return std::any_of(files_.begin(), files_.end(), [&](const std::string& f) { return sameFile(path, f); });
+}
+
 bool naturalLess(const std::string& a, const std::string& b)
 {
     std::size_t i = 0, j = 0;

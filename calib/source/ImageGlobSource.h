@@ -28,6 +28,7 @@ public:
     std::string description() const override { return "images " + pattern_; }
     bool isSeekable() const override { return true; }
     int frameCount() const override { return int(files_.size()); }
+    bool readsFile(const std::string& path) const override;
     cv::Size frameSize() const override { return size_; }
 
 protected:

@@ -17,6 +17,7 @@ public:
     bool isSeekable() const override { return true; }
     int frameCount() const override { return reader_.frameCount(); }
     cv::Size frameSize() const override { return reader_.frameSize(); }
+    bool readsFile(const std::string& path) const override;
 
 protected:
     std::optional<FrameError> readAt(int index, Frame& out) override;

@@ -23,6 +23,7 @@ public:
     // The container's count; -1 when it gives none (the end is found by reading).
     int frameCount() const override { return count_; }
     cv::Size frameSize() const override { return size_; }
+    bool readsFile(const std::string& path) const override { return sameFile(path, path_); }
 
 protected:
     std::optional<FrameError> readAt(int index, Frame& out) override;
