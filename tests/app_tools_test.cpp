@@ -16,10 +16,13 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "ToolRun.h"
+
 #include <cmath>
 #include <filesystem>
 
 namespace fs = std::filesystem;
+using namespace tooltest;
 
 namespace {
 
@@ -32,137 +35,10 @@ const QString kConfig = QStringLiteral(OMNITUNE_CONFIG);
 // under the sanitizers.
 constexpr int kTourFrames = 20;
 constexpr int kNoBallFrames = 6;
-constexpr int kTimeoutMs = 10 * 60 * 1000;  // generous: a hang fails, a slow sanitizer build does not
 
 const char* const kDetectHeader = "frame,found,px,py,radius_px,x_m,y_m,time_ms";
 const char* const kTruthHeader = "frame,ball_visible,px,py,radius_px,x_m,y_m,robot_x,robot_y,robot_heading";
 const char* const kStages[] = {"acquired", "segmented", "grayscale", "edges", "hough"};
-
-// One finished tool run.
-struct Run {
-    QString command;
-    bool finished = false;
-    QProcess::ExitStatus status = QProcess::CrashExit;
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-
-    bool exitedWith(int code) const { return finished && status == QProcess::NormalExit && exitCode == code; }
-    // Exited by itself with a non-zero code (a crash or a hang is not a clean refusal).
-    bool refused() const { return finished && status == QProcess::NormalExit && exitCode != 0; }
-    QStringList errLines() const
-    {
-        QStringList lines = QString::fromUtf8(err).split('\n');
-        while (!lines.isEmpty() && lines.last().trimmed().isEmpty()) lines.removeLast();
-        return lines;
-    }
-    // For failure messages: the command, how it ended and what it said.
-    QString describe() const
-    {
-        QString s = "\n  command: " + command + "\n  ";
-        if (!finished)
-            s += "did not finish";
-        else if (status == QProcess::CrashExit)
-            s += "crashed";
-        else
-            s += "exit code " + QString::number(exitCode);
-        s += "\n  stderr: " + QString::fromUtf8(err.left(2000));
-        if (out.size() < 400) s += "\n  stdout: " + QString::fromUtf8(out);
-        return s;
-    }
-};
-
-Run runTool(const QString& program, const QStringList& args)
-{
-    Run r;
-    r.command = QFileInfo(program).fileName() + " " + args.join(' ');
-    QProcess p;
-    p.start(program, args);
-    if (!p.waitForStarted(kTimeoutMs)) {
-        r.err = "could not start: " + p.errorString().toUtf8();
-        return r;
-    }
-    r.finished = p.waitForFinished(kTimeoutMs);
-    if (!r.finished) {
-        p.kill();
-        p.waitForFinished(kTimeoutMs);
-    }
-    r.status = p.exitStatus();
-    r.exitCode = p.exitCode();
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
-}
-
-// CSV with a header; fields may be quoted ("a, b" and "" for a quote), lines end in \n or \r\n.
-struct Csv {
-    QStringList header;
-    QVector<QStringList> rows;
-
-    int column(const QString& name) const { return header.indexOf(name); }
-    QString at(int row, const QString& name) const
-    {
-        const int c = column(name);
-        return c >= 0 && c < rows[row].size() ? rows[row][c] : QString();
-    }
-    double number(int row, const QString& name) const { return at(row, name).toDouble(); }
-};
-
-QStringList splitCsvLine(const QString& line)
-{
-    QStringList fields;
-    QString field;
-    bool quoted = false;
-    for (int i = 0; i < line.size(); ++i) {
-        const QChar c = line[i];
-        if (quoted) {
-            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-                field += '"';
-                ++i;
-            } else if (c == '"') {
-                quoted = false;
-            } else {
-                field += c;
-            }
-        } else if (c == '"') {
-            quoted = true;
-        } else if (c == ',') {
-            fields << field;
-            field.clear();
-        } else {
-            field += c;
-        }
-    }
-    fields << field;
-    return fields;
-}
-
-Csv parseCsv(const QByteArray& text)
-{
-    Csv csv;
-    const QStringList lines = QString::fromUtf8(text).split('\n');
-    for (QString line : lines) {
-        if (line.endsWith('\r')) line.chop(1);
-        if (line.isEmpty()) continue;
-        if (csv.header.isEmpty())
-            csv.header = splitCsvLine(line);
-        else
-            csv.rows << splitCsvLine(line);
-    }
-    return csv;
-}
-
-QByteArray readBytes(const QString& path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
-bool writeBytes(const QString& path, const QByteArray& bytes)
-{
-    QFile f(path);
-    return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(bytes) == bytes.size();
-}
 
 QString framePath(const QString& session, int index)
 {
