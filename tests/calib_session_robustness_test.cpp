@@ -14,6 +14,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "FileBytes.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -21,6 +23,7 @@
 
 using namespace omnitune;
 namespace fs = std::filesystem;
+using namespace filetest;
 
 namespace {
 
@@ -30,20 +33,6 @@ cv::Mat frameOf(int index)
 {
     cv::Mat m(kSize, CV_8UC3, cv::Scalar(index * 7 % 256, 40, 90));
     return m;
-}
-
-std::string readFile(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-void writeFile(const std::string& path, const std::string& bytes)
-{
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << bytes;
 }
 
 SessionInfo smallInfo()

@@ -18,6 +18,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "FileBytes.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -26,6 +28,7 @@
 
 using namespace omnitune;
 namespace fs = std::filesystem;
+using namespace filetest;
 Q_DECLARE_METATYPE(omnitune::SessionIssueKind)
 Q_DECLARE_METATYPE(omnitune::FrameErrorKind)
 
@@ -46,20 +49,6 @@ cv::Mat syntheticFrame(int index, cv::Size size = kSize)
 bool identical(const cv::Mat& a, const cv::Mat& b)
 {
     return a.size() == b.size() && a.type() == b.type() && cv::norm(a, b, cv::NORM_INF) == 0.0;
-}
-
-std::string readFile(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-void writeFile(const std::string& path, const std::string& bytes)
-{
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << bytes;
 }
 
 SessionInfo exampleInfo()
