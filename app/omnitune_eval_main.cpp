@@ -8,6 +8,8 @@
 #include "app/StderrProgress.h"
 #include "app/ToolConfig.h"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 
@@ -118,7 +120,13 @@ int main(int argc, char** argv)
             rows.push_back(row);
         }
     }
-    if (!rows.empty()) std::cout << (format == "md" ? evaluationMarkdown(rows) : evaluationCsv(rows));
+    if (!rows.empty()) {
+        errno = 0;
+        std::cout << (format == "md" ? evaluationMarkdown(rows) : evaluationCsv(rows)) << std::flush;
+        if (!std::cout)
+            return fail(std::string("writing the table to standard output failed") +
+                        (errno ? std::string(": ") + std::strerror(errno) : std::string()));
+    }
     if (!allEvaluated) return 1;
     return 0;
 }

@@ -146,6 +146,14 @@ private slots:
         }
     }
 
+    // Defect 2: eval's table on a full disk is a failure too.
+    void evalReportsAFullDisk()
+    {
+        const Run r = runTool(kEval, {"--session", session_}, "exec >/dev/full;");
+        QVERIFY2(r.refused(), qPrintable("a table lost to a full disk passed for success" + r.describe()));
+        QVERIFY2(contains(r.err, {"standard output", "No space left on device"}), qPrintable(r.describe()));
+    }
+
     // Defect 2: stage images into a folder nothing can be written to (as root too: /proc).
     void detectReportsUnwritableStages()
     {

@@ -4,6 +4,8 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <utility>
 
@@ -175,10 +177,12 @@ std::optional<SessionIssue> SessionWriter::appendFrame(const cv::Mat& bgr, const
         TruthRow row = *truth;
         row.frame = index;
         // Flushed per row so a crash keeps every row whose frame is on disk.
+        errno = 0;
         truth_ << formatTruthRow(row) << '\n' << std::flush;
         if (!truth_)
             problem = SessionIssue{SessionIssueKind::WriteError, truthPath, 0, "",
-                                   "frame " + std::to_string(index) + " was saved but its truth row could not be written"};
+                                   "frame " + std::to_string(index) + " was saved but its truth row could not be written" +
+                                       (errno ? std::string(": ") + std::strerror(errno) : std::string())};
     }
     if (firstSetsSize || info_.frameCount % options_.infoEveryFrames == 0)
         if (auto err = writeInfo(); err && !problem) problem = err;
