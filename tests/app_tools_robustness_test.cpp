@@ -4,6 +4,9 @@
 // reason on stderr, and that every file the user had is still as it was.
 #include "calib/session/SessionReader.h"
 
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
@@ -172,6 +175,7 @@ private slots:
         QTest::newRow("the session's config.yml") << "@S/config.yml" << QStringList{};
         QTest::newRow("session.yml") << "@S/session.yml" << QStringList{};
         QTest::newRow("a frame") << "@S/frames/000002.png" << QStringList{};
+        QTest::newRow("the config's mask") << "@S/mask.png" << QStringList{};
         QTest::newRow("truth.csv through a link") << "@T/link-to-truth.csv" << QStringList{};
         QTest::newRow("--config given elsewhere") << "@T/other.yml" << QStringList{"--config", "@T/other.yml"};
         QTest::newRow("an image of a glob") << "@S/frames/000003.png" << QStringList{"--input", "@S/frames/*.png",
@@ -183,9 +187,14 @@ private slots:
         QFETCH(QString, target);
         QFETCH(QStringList, extra);
         const QString s = copyOfSession(QString("input-%1").arg(QTest::currentDataTag()).replace(' ', '_'));
+        // The session's config reads a mask (all white: every pixel processed).
+        QVERIFY(cv::imwrite((s + "/mask.png").toStdString(), cv::Mat(480, 640, CV_8UC1, cv::Scalar(255))));
+        QString config = QString::fromUtf8(readBytes(s + "/config.yml"));
+        QVERIFY(config.contains("mask_file: \"\""));
+        QVERIFY(writeBytes(s + "/config.yml", config.replace("mask_file: \"\"", "mask_file: \"mask.png\"").toUtf8()));
         QFile::remove(path("link-to-truth.csv"));
         fs::create_hard_link((s + "/truth.csv").toStdString(), path("link-to-truth.csv").toStdString());
-        QVERIFY(QFile::copy(s + "/config.yml", path("other.yml")) || QFile::exists(path("other.yml")));
+        QVERIFY(QFile::copy(session_ + "/config.yml", path("other.yml")) || QFile::exists(path("other.yml")));
         auto expand = [&](QString x) { return x.replace("@S", s).replace("@T", tmp_.path()); };
         target = expand(target);
         const QByteArray before = readBytes(target);
