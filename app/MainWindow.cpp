@@ -17,6 +17,7 @@
 
 #include <QAction>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -35,7 +36,7 @@ namespace omnitune {
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), view_(new PipelineView(this)), nav_(new FrameNavigator(this)),
       panel_(new ThresholdPanel(&doc_, this)), candidates_(new CandidateTableModel(this)),
-      marker_(new TruthMarker(&truth_, view_, this)), resultLabel_(new QLabel(this)), truthLabel_(new QLabel(this)),
+      marker_(new TruthMarker(&truth_, view_, doc_.undoStack(), this)), resultLabel_(new QLabel(this)), truthLabel_(new QLabel(this)),
       timingLabel_(new QLabel(this)), pixelLabel_(new QLabel(this))
 {
     auto* central = new QWidget(this);
@@ -110,6 +111,12 @@ MainWindow::MainWindow(QWidget* parent)
         nav_->setMarks(marks, {FrameMarkKind::Truth});
     });
     connect(panel_, &ThresholdPanel::editRefused, this, [this](const QString& why) { statusBar()->showMessage(why, 8000); });
+    // Escape leaves an editor (a threshold, the frame box): the panes take the keyboard back,
+    // so arrows, Space and T act on frames again.
+    auto* escape = new QAction(this);
+    escape->setShortcut(Qt::Key_Escape);
+    connect(escape, &QAction::triggered, view_, [this] { view_->setFocus(Qt::ShortcutFocusReason); });
+    addAction(escape);
 
     setAcceptDrops(true);  // a session folder, video, image or config.yml dropped on the window opens
     buildMenus();
@@ -211,29 +218,73 @@ bool MainWindow::openSource(const QString& path)
         return false;
     }
     if (!maybeKeepTruth()) return false;
-    notices_->clear();  // they were about the previous source
+    // Unsaved edits never travel to another source unasked (Cancel keeps the current one open).
+    if (!maybeSave(tr("The config has unsaved changes. Save them before opening %1?").arg(QFileInfo(path).fileName()), true))
+        return false;
+    sourceName_ = QFileInfo(path).fileName();
+    clearForNewSource();
     QStringList sourceWarnings;
     for (const auto& s : opened.warnings) sourceWarnings << QString::fromStdString(s);
     notices_->add(tr("Opened %1 with warnings:").arg(path), sourceWarnings);
-    // A session brings its own config: use it unless that would throw away unsaved edits.
     const auto* session = dynamic_cast<const SessionSource*>(opened.source.get());
-    if (session && session->reader().hasConfig() && maybeSave())
-        openConfig(QString::fromStdString(session->reader().configPath()));
     const QString sessionFolder = session ? QString::fromStdString(session->reader().folder()) : QString();
+    if (session && session->reader().hasConfig() && openConfig(QString::fromStdString(session->reader().configPath())))
+        sessionConfigPath_ = doc_.path();  // a session brings its own config
+    else
+        keepConfigFor(path, sessionFolder);
     source_ = std::move(opened.source);
-    ++sourceTag_;
-    sourceName_ = QFileInfo(path).fileName();
     sourcePath_ = path;  // Apply to whole session re-opens it in a thread of its own
     applyToSessionAction_->setEnabled(true);
     if (sweepDialog_) sweepDialog_->reset();  // its results belong to the previous source
     nav_->setFrameCount(source_->frameCount());
     nav_->setFrameRate(doc_.config().camera.frameRate);
-    marker_->setFrameCount(source_->frameCount());
+    marker_->reset(source_->frameCount());
     openTruth(sessionFolder);
     recent_->add(path);
     updateTitle();
     showFrame(0);
     return true;
+}
+
+void MainWindow::clearForNewSource()
+{
+    // Nothing of the previous source may stay on screen under the new title: panes, overlays,
+    // table and labels are emptied now, and runs of the old source still in flight are dropped.
+    ++sourceTag_;
+    lastRun_.reset();
+    marker_->setRun(nullptr);
+    view_->clear(tr("Opening %1: reading its first frame...").arg(sourceName_));
+    candidates_->clear();
+    resultLabel_->setText(tr("Opening %1...").arg(sourceName_));
+    timingLabel_->clear();
+    pixelLabel_->clear();
+    averaged_ = 0;
+    averageMs_ = 0;
+    notices_->clear();  // they were about the previous source
+}
+
+void MainWindow::keepConfigFor(const QString& path, const QString& sessionFolder)
+{
+    // No config of its own: the values on screen stay (most likely the same camera), and the
+    // notice bar says whose they are. A previous session's own config.yml is unlinked, so
+    // Ctrl+S never writes this source's tuning into the other session's folder.
+    const QString dir = sessionFolder.isEmpty() ? QFileInfo(path).absolutePath() : sessionFolder;
+    suggestedConfigPath_ = QDir(dir).filePath(QStringLiteral("config.yml"));
+    const QString what = sessionFolder.isEmpty() ? tr("%1 carries no config").arg(sourceName_)
+                                                 : tr("%1 has no config.yml").arg(sourceName_);
+    QString note;
+    if (!doc_.path().isEmpty() && doc_.path() == sessionConfigPath_) {
+        configOrigin_ = tr("config of %1").arg(QDir(QFileInfo(doc_.path()).absolutePath()).dirName());
+        note = tr("showing the %1 (%2), not linked to that file: Save config (Ctrl+S) asks where, proposing %3")
+                   .arg(configOrigin_, doc_.path(), suggestedConfigPath_);
+        doc_.reset(doc_.config());
+    } else if (doc_.path().isEmpty()) {
+        note = tr("showing the %1; Save config (Ctrl+S) asks where, proposing %2").arg(configOrigin_, suggestedConfigPath_);
+    } else {
+        note = tr("still using %1, opened by hand; Save config (Ctrl+S) writes there").arg(doc_.path());
+    }
+    sessionConfigPath_.clear();
+    notices_->add(tr("Config:"), {tr("%1: %2.").arg(what, note)});
 }
 
 void MainWindow::openTruth(const QString& sessionFolder)
@@ -267,7 +318,10 @@ bool MainWindow::openPath(const QString& path)
     if (suffix == "yml" || suffix == "yaml") {
         if (QFileInfo(path).fileName() == QString::fromUtf8(kSessionInfoFile.data(), int(kSessionInfoFile.size())))
             return openSource(path);  // session.yml opens its session
-        if (!maybeSave() || !openConfig(path)) return false;
+        if (!maybeSave(tr("The config has unsaved changes. Save them before opening %1?").arg(QFileInfo(path).fileName()), false)
+            || !openConfig(path))
+            return false;
+        sessionConfigPath_.clear();
         recent_->add(path);  // only configs opened by hand: a session's own comes with it
         return true;
     }
@@ -296,7 +350,7 @@ void MainWindow::showFrame(int index)
     if (!source_) return;
     frameIndex_ = index;
     nav_->setCurrent(index);
-    marker_->setFrame(index);
+    marker_->setFrame(index);  // marks wait for this frame's run; the panes still show the last one
     requestRun();
 }
 
@@ -311,12 +365,15 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
 {
     if (run->sourceTag != sourceTag_) return;  // a frame of the source open before this one
     lastRun_ = run;
-    marker_->setRun(run);
+    marker_->setRun(run);  // the truth drawn is this frame's, whatever the slider asks for next
     if (!run->error.isEmpty() || !run->result.ok()) {
-        // The panes keep the last good frame; the label says why this one is not shown.
+        // Shown all the same (when it could be read), with the reason on it: never another frame.
         const QString why = run->error.isEmpty() ? QString::fromStdString(run->result.error) : run->error;
-        resultLabel_->setText(run->frameUnreadable ? tr("Frame %1 skipped: %2").arg(run->frameIndex).arg(why)
-                                                   : tr("Frame %1: %2").arg(run->frameIndex).arg(why));
+        const QString text = run->frameUnreadable ? tr("Frame %1 skipped: %2").arg(run->frameIndex).arg(why)
+                                                  : tr("Frame %1 not processed: %2").arg(run->frameIndex).arg(why);
+        view_->showUnprocessed(*run, text);
+        candidates_->clear();
+        resultLabel_->setText(text);
         emit runShown(run->frameIndex);
         return;
     }
@@ -326,7 +383,7 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
     overlay->candidates = run->result.candidates;
     overlay->detection = run->result.detection;
     view_->showRun(*run, overlay);
-    candidates_->setResult(run->result);
+    candidates_->setResult(run->result, run->config);
 
     const BallDetection& d = run->result.detection;
     nav_->setMark(run->frameIndex, FrameMarkKind::Detected, d.found);  // the slider marks every frame seen with a ball
@@ -362,7 +419,8 @@ bool MainWindow::saveConfig()
 
 bool MainWindow::saveConfigAs()
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save config"), doc_.path(), tr("Config (*.yml *.yaml)"));
+    const QString proposed = doc_.path().isEmpty() ? suggestedConfigPath_ : doc_.path();
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save config"), proposed, tr("Config (*.yml *.yaml)"));
     if (path.isEmpty()) return false;
     if (const auto err = doc_.saveAs(path)) {
         QMessageBox::critical(this, tr("Cannot save the config"), *err);
@@ -371,14 +429,15 @@ bool MainWindow::saveConfigAs()
     return true;
 }
 
-bool MainWindow::maybeSave()
+bool MainWindow::maybeSave(const QString& question, bool discardNow)
 {
     if (!doc_.isDirty()) return true;
-    const auto answer = QMessageBox::warning(this, tr("Unsaved changes"),
-                                             tr("The config has unsaved changes. Save them first?"),
+    const auto answer = QMessageBox::warning(this, tr("Unsaved changes"), question,
                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Save) return saveConfig();
-    return answer == QMessageBox::Discard;
+    if (answer != QMessageBox::Discard) return false;
+    if (discardNow) doc_.discardChanges();  // the edits must not go on with the next source
+    return true;
 }
 
 bool MainWindow::maybeKeepTruth()
@@ -393,7 +452,7 @@ bool MainWindow::maybeKeepTruth()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (maybeKeepTruth() && maybeSave())
+    if (maybeKeepTruth() && maybeSave(tr("The config has unsaved changes. Save them first?"), false))
         event->accept();
     else
         event->ignore();
@@ -414,14 +473,17 @@ void MainWindow::chooseSourceFile()
 
 void MainWindow::chooseConfig()
 {
-    if (!maybeSave()) return;
+    if (!maybeSave(tr("The config has unsaved changes. Save them before opening another?"), false)) return;
     const QString path = QFileDialog::getOpenFileName(this, tr("Open config"), QString(), tr("Config (*.yml *.yaml)"));
-    if (!path.isEmpty() && openConfig(path)) recent_->add(path);
+    if (!path.isEmpty() && openConfig(path)) {
+        sessionConfigPath_.clear();
+        recent_->add(path);
+    }
 }
 
 void MainWindow::updateTitle()
 {
-    const QString config = doc_.path().isEmpty() ? tr("default config") : QFileInfo(doc_.path()).fileName();
+    const QString config = doc_.path().isEmpty() ? configOrigin_ : QFileInfo(doc_.path()).fileName();
     setWindowTitle(tr("OmniTune - %1 - %2[*]").arg(sourceName_.isEmpty() ? tr("no source") : sourceName_, config));
     setWindowModified(doc_.isDirty());
 }
