@@ -2,6 +2,7 @@
 
 #include "widgets/CandidateTableModel.h"
 #include "widgets/CandidateTableView.h"
+#include "widgets/ConfigFiles.h"
 #include "widgets/FrameNavigator.h"
 #include "calib/source/FrameSourceFactory.h"
 #include "widgets/MarkedSlider.h"
@@ -17,7 +18,6 @@
 
 #include <QAction>
 #include <QCloseEvent>
-#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -46,6 +46,8 @@ MainWindow::MainWindow(QWidget* parent)
     resultLabel_->setObjectName("result");
     resultLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     notices_ = new NoticeBar(this);
+    configFiles_ = new ConfigFiles(&doc_, notices_, this);
+    connect(configFiles_, &ConfigFiles::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
     layout->addWidget(notices_);
     layout->addWidget(view_, 1);
     auto* resultRow = new QHBoxLayout;
@@ -219,7 +221,7 @@ bool MainWindow::openSource(const QString& path)
     }
     if (!maybeKeepTruth()) return false;
     // Unsaved edits never travel to another source unasked (Cancel keeps the current one open).
-    if (!maybeSave(tr("The config has unsaved changes. Save them before opening %1?").arg(QFileInfo(path).fileName()), true))
+    if (!configFiles_->maybeSave(tr("The config has unsaved changes. Save them before opening %1?").arg(QFileInfo(path).fileName()), true))
         return false;
     sourceName_ = QFileInfo(path).fileName();
     clearForNewSource();
@@ -228,10 +230,10 @@ bool MainWindow::openSource(const QString& path)
     notices_->add(tr("Opened %1 with warnings:").arg(path), sourceWarnings);
     const auto* session = dynamic_cast<const SessionSource*>(opened.source.get());
     const QString sessionFolder = session ? QString::fromStdString(session->reader().folder()) : QString();
-    if (session && session->reader().hasConfig() && openConfig(QString::fromStdString(session->reader().configPath())))
-        sessionConfigPath_ = doc_.path();  // a session brings its own config
-    else
-        keepConfigFor(path, sessionFolder);
+    // A session brings its own config; any other source keeps the one on screen (ConfigFiles).
+    if (!session || !session->reader().hasConfig()
+        || !configFiles_->openSessionConfig(QString::fromStdString(session->reader().configPath())))
+        configFiles_->keepFor(sourceName_, path, sessionFolder);
     source_ = std::move(opened.source);
     sourcePath_ = path;  // Apply to whole session re-opens it in a thread of its own
     applyToSessionAction_->setEnabled(true);
@@ -263,30 +265,6 @@ void MainWindow::clearForNewSource()
     notices_->clear();  // they were about the previous source
 }
 
-void MainWindow::keepConfigFor(const QString& path, const QString& sessionFolder)
-{
-    // No config of its own: the values on screen stay (most likely the same camera), and the
-    // notice bar says whose they are. A previous session's own config.yml is unlinked, so
-    // Ctrl+S never writes this source's tuning into the other session's folder.
-    const QString dir = sessionFolder.isEmpty() ? QFileInfo(path).absolutePath() : sessionFolder;
-    suggestedConfigPath_ = QDir(dir).filePath(QStringLiteral("config.yml"));
-    const QString what = sessionFolder.isEmpty() ? tr("%1 carries no config").arg(sourceName_)
-                                                 : tr("%1 has no config.yml").arg(sourceName_);
-    QString note;
-    if (!doc_.path().isEmpty() && doc_.path() == sessionConfigPath_) {
-        configOrigin_ = tr("config of %1").arg(QDir(QFileInfo(doc_.path()).absolutePath()).dirName());
-        note = tr("showing the %1 (%2), not linked to that file: Save config (Ctrl+S) asks where, proposing %3")
-                   .arg(configOrigin_, doc_.path(), suggestedConfigPath_);
-        doc_.reset(doc_.config());
-    } else if (doc_.path().isEmpty()) {
-        note = tr("showing the %1; Save config (Ctrl+S) asks where, proposing %2").arg(configOrigin_, suggestedConfigPath_);
-    } else {
-        note = tr("still using %1, opened by hand; Save config (Ctrl+S) writes there").arg(doc_.path());
-    }
-    sessionConfigPath_.clear();
-    notices_->add(tr("Config:"), {tr("%1: %2.").arg(what, note)});
-}
-
 void MainWindow::openTruth(const QString& sessionFolder)
 {
     if (sessionFolder.isEmpty()) {  // truth.csv belongs to a session folder (docs/sessions.md)
@@ -300,17 +278,7 @@ void MainWindow::openTruth(const QString& sessionFolder)
         notices_->add(tr("Ground truth (truth.csv):"), warnings);
 }
 
-bool MainWindow::openConfig(const QString& path)
-{
-    QStringList warnings;
-    if (const auto err = doc_.load(path, &warnings)) {
-        QMessageBox::critical(this, tr("Cannot load the config"), *err);
-        return false;
-    }
-    notices_->add(tr("Config %1 loaded with warnings (omnitune-config --upgrade FILE writes the missing keys):").arg(path),
-                  warnings);
-    return true;
-}
+bool MainWindow::openConfig(const QString& path) { return configFiles_->open(path); }
 
 bool MainWindow::openPath(const QString& path)
 {
@@ -318,10 +286,9 @@ bool MainWindow::openPath(const QString& path)
     if (suffix == "yml" || suffix == "yaml") {
         if (QFileInfo(path).fileName() == QString::fromUtf8(kSessionInfoFile.data(), int(kSessionInfoFile.size())))
             return openSource(path);  // session.yml opens its session
-        if (!maybeSave(tr("The config has unsaved changes. Save them before opening %1?").arg(QFileInfo(path).fileName()), false)
+        if (!configFiles_->maybeSave(tr("The config has unsaved changes. Save them before opening %1?").arg(QFileInfo(path).fileName()), false)
             || !openConfig(path))
             return false;
-        sessionConfigPath_.clear();
         recent_->add(path);  // only configs opened by hand: a session's own comes with it
         return true;
     }
@@ -406,39 +373,9 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
     emit runShown(run->frameIndex);
 }
 
-bool MainWindow::saveConfig()
-{
-    if (doc_.path().isEmpty()) return saveConfigAs();
-    if (const auto err = doc_.save()) {
-        QMessageBox::critical(this, tr("Cannot save the config"), *err);
-        return false;
-    }
-    statusBar()->showMessage(tr("Saved %1 (the file as it was before your first save is kept as .bak)").arg(doc_.path()), 5000);
-    return true;
-}
+bool MainWindow::saveConfig() { return configFiles_->save(); }
 
-bool MainWindow::saveConfigAs()
-{
-    const QString proposed = doc_.path().isEmpty() ? suggestedConfigPath_ : doc_.path();
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save config"), proposed, tr("Config (*.yml *.yaml)"));
-    if (path.isEmpty()) return false;
-    if (const auto err = doc_.saveAs(path)) {
-        QMessageBox::critical(this, tr("Cannot save the config"), *err);
-        return false;
-    }
-    return true;
-}
-
-bool MainWindow::maybeSave(const QString& question, bool discardNow)
-{
-    if (!doc_.isDirty()) return true;
-    const auto answer = QMessageBox::warning(this, tr("Unsaved changes"), question,
-                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
-    if (answer == QMessageBox::Save) return saveConfig();
-    if (answer != QMessageBox::Discard) return false;
-    if (discardNow) doc_.discardChanges();  // the edits must not go on with the next source
-    return true;
-}
+bool MainWindow::saveConfigAs() { return configFiles_->saveAs(); }
 
 bool MainWindow::maybeKeepTruth()
 {
@@ -452,7 +389,7 @@ bool MainWindow::maybeKeepTruth()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (maybeKeepTruth() && maybeSave(tr("The config has unsaved changes. Save them first?"), false))
+    if (maybeKeepTruth() && configFiles_->maybeSave(tr("The config has unsaved changes. Save them first?"), false))
         event->accept();
     else
         event->ignore();
@@ -473,17 +410,13 @@ void MainWindow::chooseSourceFile()
 
 void MainWindow::chooseConfig()
 {
-    if (!maybeSave(tr("The config has unsaved changes. Save them before opening another?"), false)) return;
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open config"), QString(), tr("Config (*.yml *.yaml)"));
-    if (!path.isEmpty() && openConfig(path)) {
-        sessionConfigPath_.clear();
-        recent_->add(path);
-    }
+    const QString path = configFiles_->choose();
+    if (!path.isEmpty()) recent_->add(path);
 }
 
 void MainWindow::updateTitle()
 {
-    const QString config = doc_.path().isEmpty() ? configOrigin_ : QFileInfo(doc_.path()).fileName();
+    const QString config = configFiles_->name();
     setWindowTitle(tr("OmniTune - %1 - %2[*]").arg(sourceName_.isEmpty() ? tr("no source") : sourceName_, config));
     setWindowModified(doc_.isDirty());
 }

@@ -17,6 +17,7 @@ class QLabel;
 namespace omnitune {
 
 class CandidateTableModel;
+class ConfigFiles;
 class FrameNavigator;
 class NoticeBar;
 class PipelineView;
@@ -70,12 +71,7 @@ private:
     void buildMenus();
     void requestRun();
     void onRunFinished(std::shared_ptr<const PipelineRun> run);
-    // Asks `question` (Save / Discard / Cancel) when the config has unsaved changes; false:
-    // cancelled or the save failed. `discardNow`: Discard also drops the edits at once.
-    bool maybeSave(const QString& question, bool discardNow);
     void clearForNewSource();
-    // The config shown for a source without one of its own; said in the notice bar.
-    void keepConfigFor(const QString& path, const QString& sessionFolder);
     bool maybeKeepTruth();  // retries a failed truth.csv save; asks before marks are dropped
     void updateTitle();
     void chooseSource();
@@ -93,15 +89,13 @@ private:
     TruthMarker* marker_;
     RecentFiles* recent_ = nullptr;
     NoticeBar* notices_ = nullptr;
+    ConfigFiles* configFiles_ = nullptr;  // open, save, ask; which config a source gets
     QLabel* resultLabel_;
     QLabel* truthLabel_;
     QLabel* timingLabel_;
     QLabel* pixelLabel_;
     std::shared_ptr<FrameSource> source_;  // read on the runner's thread once handed to it
     QString sourceName_;
-    QString sessionConfigPath_;  // the config.yml the open session brought, if it is the one shown
-    QString suggestedConfigPath_;  // where Save proposes to put a config that has no file
-    QString configOrigin_ = tr("default config");  // names a config without a file (title, notices)
     int frameIndex_ = 0;  // the frame asked for last
     quint64 sourceTag_ = 0;  // counts the sources opened; runs carry it
     quint64 generation_ = 1;
