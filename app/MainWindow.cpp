@@ -340,7 +340,10 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
                                                   : tr("Frame %1 not processed: %2").arg(run->frameIndex).arg(why);
         view_->showUnprocessed(*run, text);
         candidates_->clear();
-        resultLabel_->setText(text);
+        // Short here (one line under the panes); the whole reason is on pane 1 and in the tooltip.
+        resultLabel_->setText(run->frameUnreadable ? tr("Frame %1 skipped: it cannot be read (pane 1 says why)").arg(run->frameIndex)
+                                                   : tr("Frame %1 not processed (pane 1 says why)").arg(run->frameIndex));
+        resultLabel_->setToolTip(text);
         emit runShown(run->frameIndex);
         return;
     }
@@ -350,6 +353,7 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
     overlay->candidates = run->result.candidates;
     overlay->detection = run->result.detection;
     view_->showRun(*run, overlay);
+    resultLabel_->setToolTip(QString());
     candidates_->setResult(run->result, run->config);
 
     const BallDetection& d = run->result.detection;

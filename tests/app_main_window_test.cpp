@@ -233,7 +233,7 @@ private slots:
         QVERIFY(waitForFrame(1));
         QVERIFY(window_->lastRun()->frameUnreadable);
         const QString text = window_->findChild<QLabel*>("result")->text();
-        QVERIFY2(text.contains("skipped") && text.contains("000001.png"), qPrintable(text));
+        QVERIFY2(text.contains("skipped"), qPrintable(text));
         // Not the previous frame under frame 1's name: no image, and the reason on the pane.
         QVERIFY(window_->pipelineView()->pane(PipelineView::Acquired)->image().isNull());
         QVERIFY(!before.isNull());
