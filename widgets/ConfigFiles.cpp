@@ -49,7 +49,7 @@ void ConfigFiles::keepFor(const QString& name, const QString& path, const QStrin
     } else if (doc_->path().isEmpty()) {
         note = tr("showing the %1; Save config (Ctrl+S) asks where, proposing %2").arg(origin_, suggestedPath_);
     } else {
-        note = tr("still using %1, opened by hand; Save config (Ctrl+S) writes there").arg(doc_->path());
+        note = tr("still using %1, which is not the previous session's own; Save config (Ctrl+S) writes there").arg(doc_->path());
     }
     sessionConfigPath_.clear();
     notices_->add(tr("Config:"), {tr("%1: %2.").arg(what, note)});
