@@ -23,6 +23,7 @@
 #include <QAbstractSpinBox>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QSpinBox>
 #include <QLabel>
 #include <QMenu>
 #include <QMimeData>
@@ -413,7 +414,21 @@ private slots:
         typeKey(Qt::Key_Right);
         QVERIFY(waitForFrame(2));
 
-        // Every transport control: clicked, it leaves the keyboard where it was.
+        // The frame box is a text field too: after a jump, Escape gives Space back to playing.
+        auto* frameBox = window_->navigator()->findChild<QSpinBox*>();
+        QTest::mouseClick(frameBox, Qt::LeftButton);
+        frameBox->selectAll();
+        QTest::keyClicks(frameBox, "4");
+        QTest::keyClick(frameBox, Qt::Key_Enter);
+        QVERIFY(waitForFrame(4));
+        typeKey(Qt::Key_Escape);
+        typeKey(Qt::Key_Space);
+        QVERIFY(window_->navigator()->isPlaying());
+        typeKey(Qt::Key_Space);
+        QVERIFY(!window_->navigator()->isPlaying());
+
+        // Every transport control: clicked, it leaves the keyboard where it was (a shortcut
+        // beats a button's own Space, but not a text field's, so none may take the keyboard).
         for (QWidget* w : window_->navigator()->findChildren<QWidget*>()) {
             if (!qobject_cast<QToolButton*>(w) && !qobject_cast<QCheckBox*>(w) && !qobject_cast<QComboBox*>(w)
                 && !qobject_cast<QSlider*>(w))
