@@ -252,6 +252,8 @@ private slots:
         QCOMPARE(saved.at(0).px, original.px);
         QCOMPARE(saved.at(0).radiusPx, original.radiusPx);
         QCOMPARE(window_->navigator()->current(), 0);  // the frame the undo changed is shown
+        QVERIFY2(window_->statusBar()->currentMessage().startsWith("Undone \"mark frame 0\": frame 0 is ball at"),
+                 qPrintable(window_->statusBar()->currentMessage()));
         QCOMPARE(window_->document()->config().edges.cannyLow, 55);
         QVERIFY(window_->document()->isDirty());
 

@@ -24,20 +24,21 @@ public:
     {
         setText(text);
     }
-    void redo() override { result_ = step(after_); }
-    void undo() override { result_ = step(before_); }
+    void redo() override { result_ = step(after_, QObject::tr("Redone")); }
+    void undo() override { result_ = step(before_, QObject::tr("Undone")); }
     int id() const override { return 2; }  // never merged: every mark is its own step
     const std::optional<QString>& result() const { return result_; }
 
 private:
-    std::optional<QString> step(const std::optional<TruthRow>& row)
+    std::optional<QString> step(const std::optional<TruthRow>& row, const QString& how)
     {
         const auto err = marker_->apply(path_, frame_, row);
         if (pushed_ && err) emit marker_->message(*err);
         if (pushed_ && !err) {
             emit marker_->frameRequested(frame_);  // show what the undo changed
-            emit marker_->message(QObject::tr("Frame %1: %2 (%3), saved to truth.csv")
-                                      .arg(frame_).arg(row ? TruthMarker::rowText(*row) : QObject::tr("not marked"), text()));
+            emit marker_->message(QObject::tr("%1 \"%2\": frame %3 is %4 again, saved to truth.csv")
+                                      .arg(how, text()).arg(frame_)
+                                      .arg(row ? TruthMarker::rowText(*row) : QObject::tr("not marked")));
         }
         pushed_ = true;
         return err;
