@@ -2,6 +2,7 @@
 
 #include "widgets/CandidateTableModel.h"
 #include "widgets/CandidateTableView.h"
+#include "widgets/ConfigFiles.h"
 #include "widgets/FrameNavigator.h"
 #include "calib/source/FrameSourceFactory.h"
 #include "widgets/MarkedSlider.h"
@@ -35,7 +36,7 @@ namespace omnitune {
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), view_(new PipelineView(this)), nav_(new FrameNavigator(this)),
       panel_(new ThresholdPanel(&doc_, this)), candidates_(new CandidateTableModel(this)),
-      marker_(new TruthMarker(&truth_, view_, this)), resultLabel_(new QLabel(this)), truthLabel_(new QLabel(this)),
+      marker_(new TruthMarker(&truth_, view_, doc_.undoStack(), this)), resultLabel_(new QLabel(this)), truthLabel_(new QLabel(this)),
       timingLabel_(new QLabel(this)), pixelLabel_(new QLabel(this))
 {
     auto* central = new QWidget(this);
@@ -45,6 +46,8 @@ MainWindow::MainWindow(QWidget* parent)
     resultLabel_->setObjectName("result");
     resultLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     notices_ = new NoticeBar(this);
+    configFiles_ = new ConfigFiles(&doc_, notices_, this);
+    connect(configFiles_, &ConfigFiles::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
     layout->addWidget(notices_);
     layout->addWidget(view_, 1);
     auto* resultRow = new QHBoxLayout;
@@ -110,6 +113,12 @@ MainWindow::MainWindow(QWidget* parent)
         nav_->setMarks(marks, {FrameMarkKind::Truth});
     });
     connect(panel_, &ThresholdPanel::editRefused, this, [this](const QString& why) { statusBar()->showMessage(why, 8000); });
+    // Escape leaves an editor (a threshold, the frame box): the panes take the keyboard back,
+    // so arrows, Space and T act on frames again.
+    auto* escape = new QAction(this);
+    escape->setShortcut(Qt::Key_Escape);
+    connect(escape, &QAction::triggered, view_, [this] { view_->setFocus(Qt::ShortcutFocusReason); });
+    addAction(escape);
 
     setAcceptDrops(true);  // a session folder, video, image or config.yml dropped on the window opens
     buildMenus();
@@ -211,29 +220,49 @@ bool MainWindow::openSource(const QString& path)
         return false;
     }
     if (!maybeKeepTruth()) return false;
-    notices_->clear();  // they were about the previous source
+    // Unsaved edits never travel to another source unasked (Cancel keeps the current one open).
+    if (!configFiles_->maybeSave(tr("The config has unsaved changes. Save them before opening %1?").arg(QFileInfo(path).fileName()), true))
+        return false;
+    sourceName_ = QFileInfo(path).fileName();
+    clearForNewSource();
     QStringList sourceWarnings;
     for (const auto& s : opened.warnings) sourceWarnings << QString::fromStdString(s);
     notices_->add(tr("Opened %1 with warnings:").arg(path), sourceWarnings);
-    // A session brings its own config: use it unless that would throw away unsaved edits.
     const auto* session = dynamic_cast<const SessionSource*>(opened.source.get());
-    if (session && session->reader().hasConfig() && maybeSave())
-        openConfig(QString::fromStdString(session->reader().configPath()));
     const QString sessionFolder = session ? QString::fromStdString(session->reader().folder()) : QString();
+    // A session brings its own config; any other source keeps the one on screen (ConfigFiles).
+    if (!session || !session->reader().hasConfig()
+        || !configFiles_->openSessionConfig(QString::fromStdString(session->reader().configPath())))
+        configFiles_->keepFor(sourceName_, path, sessionFolder);
     source_ = std::move(opened.source);
-    ++sourceTag_;
-    sourceName_ = QFileInfo(path).fileName();
     sourcePath_ = path;  // Apply to whole session re-opens it in a thread of its own
     applyToSessionAction_->setEnabled(true);
     if (sweepDialog_) sweepDialog_->reset();  // its results belong to the previous source
     nav_->setFrameCount(source_->frameCount());
     nav_->setFrameRate(doc_.config().camera.frameRate);
-    marker_->setFrameCount(source_->frameCount());
+    marker_->reset(source_->frameCount());
     openTruth(sessionFolder);
     recent_->add(path);
     updateTitle();
     showFrame(0);
     return true;
+}
+
+void MainWindow::clearForNewSource()
+{
+    // Nothing of the previous source may stay on screen under the new title: panes, overlays,
+    // table and labels are emptied now, and runs of the old source still in flight are dropped.
+    ++sourceTag_;
+    lastRun_.reset();
+    marker_->setRun(nullptr);
+    view_->clear(tr("Opening %1: reading its first frame...").arg(sourceName_));
+    candidates_->clear();
+    resultLabel_->setText(tr("Opening %1...").arg(sourceName_));
+    timingLabel_->clear();
+    pixelLabel_->clear();
+    averaged_ = 0;
+    averageMs_ = 0;
+    notices_->clear();  // they were about the previous source
 }
 
 void MainWindow::openTruth(const QString& sessionFolder)
@@ -249,17 +278,7 @@ void MainWindow::openTruth(const QString& sessionFolder)
         notices_->add(tr("Ground truth (truth.csv):"), warnings);
 }
 
-bool MainWindow::openConfig(const QString& path)
-{
-    QStringList warnings;
-    if (const auto err = doc_.load(path, &warnings)) {
-        QMessageBox::critical(this, tr("Cannot load the config"), *err);
-        return false;
-    }
-    notices_->add(tr("Config %1 loaded with warnings (omnitune-config --upgrade FILE writes the missing keys):").arg(path),
-                  warnings);
-    return true;
-}
+bool MainWindow::openConfig(const QString& path) { return configFiles_->open(path); }
 
 bool MainWindow::openPath(const QString& path)
 {
@@ -267,7 +286,9 @@ bool MainWindow::openPath(const QString& path)
     if (suffix == "yml" || suffix == "yaml") {
         if (QFileInfo(path).fileName() == QString::fromUtf8(kSessionInfoFile.data(), int(kSessionInfoFile.size())))
             return openSource(path);  // session.yml opens its session
-        if (!maybeSave() || !openConfig(path)) return false;
+        if (!configFiles_->maybeSave(tr("The config has unsaved changes. Save them before opening %1?").arg(QFileInfo(path).fileName()), false)
+            || !openConfig(path))
+            return false;
         recent_->add(path);  // only configs opened by hand: a session's own comes with it
         return true;
     }
@@ -296,7 +317,7 @@ void MainWindow::showFrame(int index)
     if (!source_) return;
     frameIndex_ = index;
     nav_->setCurrent(index);
-    marker_->setFrame(index);
+    marker_->setFrame(index);  // marks wait for this frame's run; the panes still show the last one
     requestRun();
 }
 
@@ -311,12 +332,18 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
 {
     if (run->sourceTag != sourceTag_) return;  // a frame of the source open before this one
     lastRun_ = run;
-    marker_->setRun(run);
+    marker_->setRun(run);  // the truth drawn is this frame's, whatever the slider asks for next
     if (!run->error.isEmpty() || !run->result.ok()) {
-        // The panes keep the last good frame; the label says why this one is not shown.
+        // Shown all the same (when it could be read), with the reason on it: never another frame.
         const QString why = run->error.isEmpty() ? QString::fromStdString(run->result.error) : run->error;
-        resultLabel_->setText(run->frameUnreadable ? tr("Frame %1 skipped: %2").arg(run->frameIndex).arg(why)
-                                                   : tr("Frame %1: %2").arg(run->frameIndex).arg(why));
+        const QString text = run->frameUnreadable ? tr("Frame %1 skipped: %2").arg(run->frameIndex).arg(why)
+                                                  : tr("Frame %1 not processed: %2").arg(run->frameIndex).arg(why);
+        view_->showUnprocessed(*run, text);
+        candidates_->clear();
+        // Short here (one line under the panes); the whole reason is on pane 1 and in the tooltip.
+        resultLabel_->setText(run->frameUnreadable ? tr("Frame %1 skipped: it cannot be read (pane 1 says why)").arg(run->frameIndex)
+                                                   : tr("Frame %1 not processed (pane 1 says why)").arg(run->frameIndex));
+        resultLabel_->setToolTip(text);
         emit runShown(run->frameIndex);
         return;
     }
@@ -326,7 +353,8 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
     overlay->candidates = run->result.candidates;
     overlay->detection = run->result.detection;
     view_->showRun(*run, overlay);
-    candidates_->setResult(run->result);
+    resultLabel_->setToolTip(QString());
+    candidates_->setResult(run->result, run->config);
 
     const BallDetection& d = run->result.detection;
     nav_->setMark(run->frameIndex, FrameMarkKind::Detected, d.found);  // the slider marks every frame seen with a ball
@@ -349,37 +377,9 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
     emit runShown(run->frameIndex);
 }
 
-bool MainWindow::saveConfig()
-{
-    if (doc_.path().isEmpty()) return saveConfigAs();
-    if (const auto err = doc_.save()) {
-        QMessageBox::critical(this, tr("Cannot save the config"), *err);
-        return false;
-    }
-    statusBar()->showMessage(tr("Saved %1 (the file as it was before your first save is kept as .bak)").arg(doc_.path()), 5000);
-    return true;
-}
+bool MainWindow::saveConfig() { return configFiles_->save(); }
 
-bool MainWindow::saveConfigAs()
-{
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save config"), doc_.path(), tr("Config (*.yml *.yaml)"));
-    if (path.isEmpty()) return false;
-    if (const auto err = doc_.saveAs(path)) {
-        QMessageBox::critical(this, tr("Cannot save the config"), *err);
-        return false;
-    }
-    return true;
-}
-
-bool MainWindow::maybeSave()
-{
-    if (!doc_.isDirty()) return true;
-    const auto answer = QMessageBox::warning(this, tr("Unsaved changes"),
-                                             tr("The config has unsaved changes. Save them first?"),
-                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
-    if (answer == QMessageBox::Save) return saveConfig();
-    return answer == QMessageBox::Discard;
-}
+bool MainWindow::saveConfigAs() { return configFiles_->saveAs(); }
 
 bool MainWindow::maybeKeepTruth()
 {
@@ -393,7 +393,7 @@ bool MainWindow::maybeKeepTruth()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (maybeKeepTruth() && maybeSave())
+    if (maybeKeepTruth() && configFiles_->maybeSave(tr("The config has unsaved changes. Save them first?"), false))
         event->accept();
     else
         event->ignore();
@@ -414,14 +414,13 @@ void MainWindow::chooseSourceFile()
 
 void MainWindow::chooseConfig()
 {
-    if (!maybeSave()) return;
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open config"), QString(), tr("Config (*.yml *.yaml)"));
-    if (!path.isEmpty() && openConfig(path)) recent_->add(path);
+    const QString path = configFiles_->choose();
+    if (!path.isEmpty()) recent_->add(path);
 }
 
 void MainWindow::updateTitle()
 {
-    const QString config = doc_.path().isEmpty() ? tr("default config") : QFileInfo(doc_.path()).fileName();
+    const QString config = configFiles_->name();
     setWindowTitle(tr("OmniTune - %1 - %2[*]").arg(sourceName_.isEmpty() ? tr("no source") : sourceName_, config));
     setWindowModified(doc_.isDirty());
 }

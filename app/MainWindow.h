@@ -17,6 +17,7 @@ class QLabel;
 namespace omnitune {
 
 class CandidateTableModel;
+class ConfigFiles;
 class FrameNavigator;
 class NoticeBar;
 class PipelineView;
@@ -70,7 +71,7 @@ private:
     void buildMenus();
     void requestRun();
     void onRunFinished(std::shared_ptr<const PipelineRun> run);
-    bool maybeSave();
+    void clearForNewSource();
     bool maybeKeepTruth();  // retries a failed truth.csv save; asks before marks are dropped
     void updateTitle();
     void chooseSource();
@@ -88,6 +89,7 @@ private:
     TruthMarker* marker_;
     RecentFiles* recent_ = nullptr;
     NoticeBar* notices_ = nullptr;
+    ConfigFiles* configFiles_ = nullptr;  // open, save, ask; which config a source gets
     QLabel* resultLabel_;
     QLabel* truthLabel_;
     QLabel* timingLabel_;

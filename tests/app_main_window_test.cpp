@@ -1,7 +1,11 @@
 // The workbench window, offscreen, on a copy of the demo session: stepping frames with keys
 // changes the panes, a threshold edit re-runs the frame and is undoable, the config saves and
 // reloads, a broken config is refused with a dialog naming the key, closing with unsaved
-// changes asks first, and at 1366x768 no pane is blank.
+// changes asks first, and at 1366x768 no pane is blank. Issue 13: a second source clears
+// every pane before its first frame and shows a frame it cannot process with the reason;
+// unsaved edits never cross to another source unasked; the truth drawn is the shown frame's;
+// the table's tooltips quote the run's thresholds; the OpenCV path says it has no
+// accumulator; the keyboard comes back to the panes after an edit.
 #include "widgets/CandidateTableModel.h"
 #include "core/ConfigParser.h"
 #include "widgets/FrameNavigator.h"
@@ -11,7 +15,15 @@
 #include "widgets/ThresholdPanel.h"
 #include "WindowTestSupport.h"
 
+#include "widgets/TruthDocument.h"
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
 #include <QAbstractSpinBox>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QSpinBox>
 #include <QLabel>
 #include <QMenu>
 #include <QMimeData>
@@ -37,6 +49,12 @@ bool notBlank(const QImage& image)
             hi = std::max<int>(hi, grey.pixelColor(x, y).value());
         }
     return hi - lo > 20;
+}
+
+// A key as the user types it: to whatever has the keyboard, shortcuts first.
+void typeKey(Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
+{
+    QTest::keyClick(QApplication::focusWidget(), key, modifiers);
 }
 
 }  // namespace
@@ -216,8 +234,12 @@ private slots:
         QVERIFY(waitForFrame(1));
         QVERIFY(window_->lastRun()->frameUnreadable);
         const QString text = window_->findChild<QLabel*>("result")->text();
-        QVERIFY2(text.contains("skipped") && text.contains("000001.png"), qPrintable(text));
-        QCOMPARE(window_->pipelineView()->pane(PipelineView::Acquired)->image(), before);  // the last good frame stays
+        QVERIFY2(text.contains("skipped"), qPrintable(text));
+        // Not the previous frame under frame 1's name: no image, and the reason on the pane.
+        QVERIFY(window_->pipelineView()->pane(PipelineView::Acquired)->image().isNull());
+        QVERIFY(!before.isNull());
+        const QString caption = window_->pipelineView()->caption(PipelineView::Acquired);
+        QVERIFY2(caption.contains("000001.png"), qPrintable(caption));
         QTest::keyClick(window_.get(), Qt::Key_Right);  // and the next one plays on
         QVERIFY(waitForFrame(2));
         QVERIFY(window_->lastRun()->result.ok());
@@ -251,6 +273,177 @@ private slots:
         // Choosing the session entry opens it again, with its own config.
         recent->actions()[1]->trigger();
         QTRY_COMPARE(window_->document()->path(), session_ + "/config.yml");
+    }
+
+    // Bug 2 (and 5's notice): the 480x480 image folder after the demo session.
+    void secondSourceClearsThePanesAndShowsWhatItCannotProcess()
+    {
+        const QString images = tmp_.filePath(QStringLiteral("real-%1").arg(QDateTime::currentMSecsSinceEpoch()));
+        QVERIFY(QDir().mkpath(images));
+        for (int i = 0; i < 3; ++i) {
+            const cv::Mat frame = cv::imread((session_ + QStringLiteral("/frames/%1.png").arg(i, 6, 10, QChar('0'))).toStdString());
+            QVERIFY(!frame.empty());
+            QVERIFY(cv::imwrite(QStringLiteral("%1/img%2.png").arg(images).arg(i).toStdString(), frame(cv::Rect(80, 0, 480, 480))));
+        }
+        QVERIFY(window_->candidates()->rowCount() > 0);
+        const double minRadius = window_->document()->config().validation.minRadiusPx;
+        QVERIFY(window_->openSource(images));
+        // Before the new source's first frame arrives, nothing of the old one is left.
+        PipelineView* view = window_->pipelineView();
+        for (int i = 0; i < PipelineView::kPaneCount; ++i) QVERIFY2(view->pane(i)->image().isNull(), qPrintable(view->pane(i)->title()));
+        QCOMPARE(window_->candidates()->rowCount(), 0);
+        QCOMPARE(view->truth().state, TruthOverlay::Unmarked);
+        QVERIFY(!window_->lastRun());
+        QVERIFY2(view->caption(PipelineView::Acquired).contains("Opening"), qPrintable(view->caption(PipelineView::Acquired)));
+
+        // The frame does not fit the config: shown all the same, with the reason on it.
+        QVERIFY(waitForFrame(0));
+        QCOMPARE(view->pane(PipelineView::Acquired)->image().size(), QSize(480, 480));
+        QVERIFY(view->pane(PipelineView::Edges)->image().isNull());
+        const QString caption = view->caption(PipelineView::Acquired);
+        QVERIFY2(caption.contains("not processed") && caption.contains("480x480"), qPrintable(caption));
+
+        // No config.yml there: the session's values go on, unlinked from its file, and it is said.
+        QCOMPARE(window_->document()->path(), QString());
+        QCOMPARE(window_->document()->config().validation.minRadiusPx, minRadius);
+        const QString notice = window_->notices()->text();
+        QVERIFY2(notice.contains("carries no config") && notice.contains("not linked"), qPrintable(notice));
+    }
+
+    // Bug 5: a session without config.yml after edits to another session's config.
+    void unsavedEditsNeverCrossToAnotherSourceUnasked()
+    {
+        const QString other = tmp_.filePath(QStringLiteral("noconfig-%1").arg(QDateTime::currentMSecsSinceEpoch()));
+        QVERIFY(copyDemo(other));
+        QVERIFY(QFile::remove(other + "/config.yml"));
+        QFile saved(session_ + "/config.yml");
+        QVERIFY(saved.open(QIODevice::ReadOnly));
+        const QByteArray before = saved.readAll();
+        saved.close();
+        QVERIFY(!window_->document()->setValue("edges.canny_low", ConfigValue(41)));
+
+        QString question;
+        answerNextMessageBox(QMessageBox::Cancel, &question);
+        QVERIFY(!window_->openSource(other));  // Cancel: nothing changes
+        QVERIFY2(question.contains("unsaved") && question.contains(QFileInfo(other).fileName()), qPrintable(question));
+        QVERIFY(window_->document()->isDirty());
+        QCOMPARE(window_->document()->path(), session_ + "/config.yml");
+        QVERIFY(window_->windowTitle().contains(QFileInfo(session_).fileName()));
+
+        answerNextMessageBox(QMessageBox::Discard, nullptr);
+        QVERIFY(window_->openSource(other));
+        QVERIFY(!window_->document()->isDirty());
+        QCOMPARE(window_->document()->config().edges.cannyLow, 60);  // the edit is gone, as answered
+        QCOMPARE(window_->document()->path(), QString());  // Ctrl+S cannot write into the first session
+        QVERIFY2(window_->notices()->text().contains("has no config.yml"), qPrintable(window_->notices()->text()));
+        QVERIFY(saved.open(QIODevice::ReadOnly));
+        QCOMPARE(saved.readAll(), before);
+        QVERIFY(waitForFrame(0));
+    }
+
+    // Bug 3: frames asked for faster than they are processed, and play.
+    void theTruthDrawnIsTheShownFramesOwn()
+    {
+        const TruthDocument* truth = window_->truth();
+        QVERIFY(truth->row(1) && truth->row(6) && truth->row(1)->px != truth->row(6)->px);
+        int checked = 0;
+        QStringList wrong;
+        connect(window_.get(), &MainWindow::runShown, this, [&](int frame) {
+            const TruthOverlay drawn = window_->pipelineView()->truth();
+            const TruthRow* row = truth->row(frame);
+            ++checked;
+            if (!row || drawn.state != TruthOverlay::Ball || drawn.x != row->px || drawn.y != row->py)
+                wrong << QStringLiteral("frame %1 shown with truth at %2,%3").arg(frame).arg(drawn.x).arg(drawn.y);
+            const QString label = window_->findChild<QLabel*>("truth")->text();
+            if (row && !label.contains(QStringLiteral("(%1, ").arg(row->px, 0, 'f', 0)))
+                wrong << QStringLiteral("frame %1, label %2").arg(frame).arg(label);
+        });
+        for (int f = 1; f <= 6; ++f) window_->showFrame(f);  // faster than the pipeline
+        QVERIFY(waitForFrame(6));
+        QTest::keyClick(window_.get(), Qt::Key_Space);  // play
+        QTRY_VERIFY(checked >= 8);
+        QTest::keyClick(window_.get(), Qt::Key_Space);
+        QVERIFY(!window_->navigator()->isPlaying());
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong.join("\n")));
+    }
+
+    // Bug 4: after an edit, the table quotes the threshold the run used.
+    void tableTooltipsQuoteTheEditedThreshold()
+    {
+        QVERIFY(!window_->document()->setValue("validation.min_non_green_pct", ConfigValue(62.5)));
+        QTRY_VERIFY(!window_->isProcessing() && window_->lastRun()->config.validation.minNonGreenPct == 62.5);
+        const QString tip = window_->candidates()->headerData(CandidateTableModel::NonGreenColumn, Qt::Horizontal, Qt::ToolTipRole).toString();
+        QVERIFY2(tip.contains("62.5 %"), qPrintable(tip));
+    }
+
+    // Bug 7: cv::HoughCircles has no accumulator; the pane says so and shows its circles.
+    void openCvHoughPaneSaysItHasNoAccumulator()
+    {
+        QVERIFY(window_->pipelineView()->caption(PipelineView::Hough).isEmpty());
+        QVERIFY(!window_->document()->setValue("algorithm.method", ConfigValue(std::string("opencv"))));
+        QTRY_VERIFY(!window_->isProcessing() && window_->lastRun()->config.algorithm == Algorithm::OpenCv);
+        const QString caption = window_->pipelineView()->caption(PipelineView::Hough);
+        QVERIFY2(caption.contains("no accumulator"), qPrintable(caption));
+        QVERIFY(notBlank(window_->pipelineView()->pane(PipelineView::Hough)->image()));
+    }
+
+    // After a threshold edit, Escape or a click on a pane gives arrows and Space back to the
+    // frames; transport controls never keep the keyboard.
+    void keyboardComesBackToTheFramesAfterAnEdit()
+    {
+        window_->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+        auto* editor = qobject_cast<QAbstractSpinBox*>(window_->thresholdPanel()->editorFor("validation.min_radius_px"));
+        QVERIFY(editor);
+        QTest::mouseClick(editor, Qt::LeftButton);
+        editor->selectAll();
+        QTest::keyClicks(editor, "5");
+        QTest::keyClick(editor, Qt::Key_Enter);
+        QCOMPARE(window_->document()->config().validation.minRadiusPx, 5.0);
+        QCOMPARE(QApplication::focusWidget(), editor);
+        typeKey(Qt::Key_Escape);
+        QVERIFY(QApplication::focusWidget() != editor);
+        typeKey(Qt::Key_Right);
+        QVERIFY(waitForFrame(1));
+        QCOMPARE(window_->document()->config().validation.minRadiusPx, 5.0);  // the arrow did not step the field
+
+        QTest::mouseClick(editor, Qt::LeftButton);
+        QCOMPARE(QApplication::focusWidget(), editor);
+        ImageView* pane = window_->pipelineView()->pane(PipelineView::Segmented);
+        QTest::mouseClick(pane, Qt::LeftButton, Qt::NoModifier, pane->rect().center());
+        typeKey(Qt::Key_Right);
+        QVERIFY(waitForFrame(2));
+
+        // The frame box is a text field too: after a jump, Escape gives Space back to playing.
+        auto* frameBox = window_->navigator()->findChild<QSpinBox*>();
+        QTest::mouseClick(frameBox, Qt::LeftButton);
+        frameBox->selectAll();
+        QTest::keyClicks(frameBox, "4");
+        QTest::keyClick(frameBox, Qt::Key_Enter);
+        QVERIFY(waitForFrame(4));
+        typeKey(Qt::Key_Escape);
+        typeKey(Qt::Key_Space);
+        QVERIFY(window_->navigator()->isPlaying());
+        typeKey(Qt::Key_Space);
+        QVERIFY(!window_->navigator()->isPlaying());
+
+        // Every transport control: clicked, it leaves the keyboard where it was (a shortcut
+        // beats a button's own Space, but not a text field's, so none may take the keyboard).
+        for (QWidget* w : window_->navigator()->findChildren<QWidget*>()) {
+            if (!qobject_cast<QToolButton*>(w) && !qobject_cast<QCheckBox*>(w) && !qobject_cast<QComboBox*>(w)
+                && !qobject_cast<QSlider*>(w))
+                continue;
+            QCOMPARE(w->focusPolicy(), Qt::NoFocus);
+        }
+        auto* loop = window_->navigator()->findChild<QCheckBox*>();
+        QTest::mouseClick(loop, Qt::LeftButton);
+        QVERIFY(!loop->isChecked());
+        QTest::mouseClick(loop, Qt::LeftButton);
+        typeKey(Qt::Key_Space);
+        QVERIFY(window_->navigator()->isPlaying());  // Space played rather than ticking "loop"
+        QVERIFY(loop->isChecked());
+        typeKey(Qt::Key_Space);
+        QVERIFY(!window_->navigator()->isPlaying());
     }
 
     void noPaneIsBlankOnALaptopScreen()

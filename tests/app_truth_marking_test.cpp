@@ -3,7 +3,9 @@
 // radius and moves on; a drag sets the radius; A accepts the detector's result, N marks no
 // ball, Delete clears, U finds the next unmarked frame; every mark is in truth.csv at once,
 // the file from before marking is kept as truth.csv.bak, and a truth.csv with a broken header
-// is never overwritten.
+// is never overwritten. Issue 13 bug 1: marking mode never carries over to another source
+// (nor turns on where it is refused), a radius far outside the ball model asks first, and
+// marks are undone and redone on the window's one undo stack.
 #include "core/BallModel.h"
 #include "widgets/FrameNavigator.h"
 #include "app/MainWindow.h"
@@ -14,6 +16,9 @@
 #include "widgets/TruthMarker.h"
 #include "WindowTestSupport.h"
 
+#include "widgets/ConfigDocument.h"
+
+#include <QAction>
 #include <QLabel>
 #include <QStatusBar>
 #include <QtTest>
@@ -158,7 +163,7 @@ private slots:
         QTest::mouseClick(acquired(), Qt::LeftButton, Qt::NoModifier, widgetPos(-20, 100));  // off the image
         QVERIFY(!window_->truth()->row(1));
         const QPoint centre = widgetPos(200, 200);
-        const QPoint out = centre + QPoint(40, 0);
+        const QPoint out = widgetPos(220, 200);  // 20 px: inside the ball model's range, no question
         QTest::mousePress(acquired(), Qt::LeftButton, Qt::NoModifier, centre);
         QMouseEvent move(QEvent::MouseMove, out, acquired()->mapToGlobal(out), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
         QApplication::sendEvent(acquired(), &move);
@@ -168,6 +173,97 @@ private slots:
         const double expected = QLineF(imagePos(centre), imagePos(out)).length();
         QVERIFY2(std::abs(dragged->radiusPx - expected) < 1e-6, qPrintable(QString::number(dragged->radiusPx)));
         QCOMPARE(window_->navigator()->current(), 2);
+    }
+
+    void markingModeNeverCarriesOverToAnotherSource()
+    {
+        open(true);
+        const TruthRow original = *window_->truth()->row(0);
+        // An image folder (the session's frames): T is refused and the mode stays off.
+        QVERIFY(window_->openSource(session_ + "/frames"));
+        QVERIFY(waitForFrame(*window_, 0));
+        auto* action = window_->findChild<QAction*>("markTruth");
+        QTest::keyClick(window_.get(), Qt::Key_T);
+        QVERIFY(!window_->truthMarker()->isMarking());
+        QVERIFY(!action->isChecked());
+        QVERIFY2(window_->findChild<QLabel*>("truth")->text().contains("session"), qPrintable(window_->findChild<QLabel*>("truth")->text()));
+
+        // The session again: not marking, so a left drag pans and the truth stays as it was.
+        QVERIFY(window_->openSource(session_));
+        QVERIFY(waitForFrame(*window_, 0));
+        QVERIFY(!window_->truthMarker()->isMarking());
+        window_->pipelineView()->transform()->setZoom(3.0, QPointF(320, 240));
+        QTest::mousePress(acquired(), Qt::LeftButton, Qt::NoModifier, widgetPos(300, 200));
+        QTest::mouseRelease(acquired(), Qt::LeftButton, Qt::NoModifier, widgetPos(340, 200));
+        QCOMPARE(window_->truth()->row(0)->px, original.px);
+        QCOMPARE(window_->truth()->row(0)->radiusPx, original.radiusPx);
+
+        // Marking on, then another source: off again, and the menu's check mark with it.
+        QTest::keyClick(window_.get(), Qt::Key_T);
+        QVERIFY(window_->truthMarker()->isMarking() && action->isChecked());
+        QVERIFY(window_->openSource(session_));
+        QVERIFY(!window_->truthMarker()->isMarking());
+        QVERIFY(!action->isChecked());
+        QVERIFY(!window_->findChild<QLabel*>("truth")->text().contains("MARKING"));
+    }
+
+    void aRadiusFarOutsideTheBallModelAsksFirst()
+    {
+        open(true);
+        const TruthRow original = *window_->truth()->row(0);
+        const double maxRadius = window_->lastRun()->config.ball.maxRadius;
+        QTest::keyClick(window_.get(), Qt::Key_T);
+        // A drag of about 111 px from (320, 240), as a pan meant in marking mode would be.
+        const QPoint centre = widgetPos(320, 240);
+        const QPoint out = widgetPos(320 + 111, 240);
+        QVERIFY(QLineF(imagePos(centre), imagePos(out)).length() > maxRadius * 1.5);
+        QString question;
+        answerNextMessageBox(QMessageBox::No, &question);
+        QTest::mousePress(acquired(), Qt::LeftButton, Qt::NoModifier, centre);
+        QTest::mouseRelease(acquired(), Qt::LeftButton, Qt::NoModifier, out);
+        QVERIFY2(question.contains("far outside") && question.contains("25.0 px"), qPrintable(question));
+        QCOMPARE(window_->truth()->row(0)->px, original.px);  // "No": the truth is untouched
+        QCOMPARE(readTruth(truthPath()).at(0).radiusPx, original.radiusPx);
+        QCOMPARE(window_->navigator()->current(), 0);
+
+        answerNextMessageBox(QMessageBox::Yes, nullptr);  // a deliberate large mark is kept
+        QTest::mousePress(acquired(), Qt::LeftButton, Qt::NoModifier, centre);
+        QTest::mouseRelease(acquired(), Qt::LeftButton, Qt::NoModifier, out);
+        QVERIFY(window_->truth()->row(0)->radiusPx > maxRadius * 1.5);
+    }
+
+    void marksUndoOnTheWindowsOneStack()
+    {
+        open(true);
+        const TruthRow original = *window_->truth()->row(0);
+        QVERIFY(original.ballVisible);
+        QUndoStack* stack = window_->document()->undoStack();
+        QVERIFY(!window_->document()->setValue("edges.canny_low", ConfigValue(55)));  // a config edit first
+        QTest::keyClick(window_.get(), Qt::Key_T);
+        QTest::keyClick(window_.get(), Qt::Key_N);  // frame 0: "no ball" replaces the ball
+        QCOMPARE(stack->count(), 2);  // one stack for both
+        QVERIFY(!readTruth(truthPath()).at(0).ballVisible);
+        QVERIFY(waitForFrame(*window_, 1));
+
+        QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);  // undoes the mark, not the edit
+        QVERIFY(window_->truth()->row(0)->ballVisible);
+        const auto saved = readTruth(truthPath());  // and truth.csv says so again
+        QVERIFY(saved.at(0).ballVisible);
+        QCOMPARE(saved.at(0).px, original.px);
+        QCOMPARE(saved.at(0).radiusPx, original.radiusPx);
+        QCOMPARE(window_->navigator()->current(), 0);  // the frame the undo changed is shown
+        QVERIFY2(window_->statusBar()->currentMessage().startsWith("Undone \"mark frame 0\": frame 0 is ball at"),
+                 qPrintable(window_->statusBar()->currentMessage()));
+        QCOMPARE(window_->document()->config().edges.cannyLow, 55);
+        QVERIFY(window_->document()->isDirty());
+
+        QTest::keySequence(window_.get(), QKeySequence::Redo);
+        QVERIFY(!readTruth(truthPath()).at(0).ballVisible);
+        QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
+        QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);  // then the config edit
+        QCOMPARE(window_->document()->config().edges.cannyLow, 60);
+        QVERIFY(!window_->document()->isDirty());  // a mark alone never makes the config unsaved
+        QVERIFY(readTruth(truthPath()).at(0).ballVisible);
     }
 
     void keepsThePreviousFileAsBackupAndReloads()

@@ -27,10 +27,11 @@ CandidateTableModel::CandidateTableModel(QObject* parent) : QAbstractTableModel(
     setThresholds(Config{});
 }
 
-void CandidateTableModel::setResult(const PipelineResult& result)
+void CandidateTableModel::setResult(const PipelineResult& result, const Config& config)
 {
     beginResetModel();
     candidates_ = result.candidates;
+    setThresholds(config);
     endResetModel();
 }
 
@@ -41,13 +42,12 @@ void CandidateTableModel::clear()
     endResetModel();
 }
 
+// Inside a model reset (or the constructor): views read everything again afterwards.
 void CandidateTableModel::setThresholds(const Config& config)
 {
     const ValidationOptions& v = config.validation;
     thresholds_ = Thresholds{v.minNonGreenPct, v.minNonBlackPct, v.minCircularityPct, v.radiusTolerance, v.minRadiusPx,
                              config.hough.minAccumulator, config.opencvHough.maxRadiusRatio, v.maxRunOnPct};
-    emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
-    if (!candidates_.empty()) emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1), {Qt::ToolTipRole});
 }
 
 const BallCandidate& CandidateTableModel::candidate(int row) const

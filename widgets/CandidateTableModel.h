@@ -37,12 +37,11 @@ public:
 
     explicit CandidateTableModel(QObject* parent = nullptr);
 
-    // Replaces all rows (a model reset).
-    void setResult(const PipelineResult& result);
+    // Replaces all rows (a model reset). `config`: the one the result was computed with; its
+    // thresholds (validation.*, hough.min_accumulator, opencv_hough.max_radius_ratio) are the
+    // ones the tooltips quote, so they always match the scores shown.
+    void setResult(const PipelineResult& result, const Config& config);
     void clear();
-    // The thresholds quoted in the tooltips (defaults until set): validation.*,
-    // hough.min_accumulator and opencv_hough.max_radius_ratio.
-    void setThresholds(const Config& config);
 
     const BallCandidate& candidate(int row) const;
     // Row of the accepted ball, -1 when none was accepted.
@@ -68,6 +67,7 @@ private:
         double maxRunOnPct;
     };
 
+    void setThresholds(const Config& config);
     QVariant display(const BallCandidate& c, int column) const;
     QVariant sortValue(const BallCandidate& c, int column) const;
     QString columnToolTip(int column) const;

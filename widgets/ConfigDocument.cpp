@@ -42,7 +42,28 @@ private:
 
 ConfigDocument::ConfigDocument(QObject* parent) : QObject(parent)
 {
-    connect(&undo_, &QUndoStack::cleanChanged, this, [this](bool clean) { emit dirtyChanged(!clean); });
+    connect(&undo_, &QUndoStack::cleanChanged, this, [this](bool clean) {
+        if (!clean) return;  // a truth mark alone leaves the config as saved
+        saved_ = config_;
+        updateDirty();
+    });
+}
+
+void ConfigDocument::markSaved()
+{
+    undo_.setClean();
+    saved_ = config_;
+    updateDirty();
+}
+
+void ConfigDocument::updateDirty()
+{
+    bool dirty = false;
+    for (const ConfigKey& k : configSchema())
+        if (!(k.get(config_) == k.get(saved_))) dirty = true;
+    if (dirty == dirty_) return;
+    dirty_ = dirty;
+    emit dirtyChanged(dirty_);
 }
 
 ConfigValue ConfigDocument::value(const QString& key) const
@@ -69,6 +90,7 @@ std::optional<QString> ConfigDocument::setValue(const QString& key, const Config
 void ConfigDocument::applyValue(const QString& key, const ConfigValue& value)
 {
     findConfigKey(key.toStdString())->set(config_, value);
+    updateDirty();
     emit changed(key);
 }
 
@@ -88,7 +110,7 @@ std::optional<QString> ConfigDocument::save()
     if (const auto err = saveConfig(config_, path_.toStdString(), !backedUpThisRun(path_)))
         return QString::fromStdString(err->toString());
     rememberBackup(path_);
-    undo_.setClean();
+    markSaved();
     return std::nullopt;
 }
 
@@ -101,7 +123,7 @@ std::optional<QString> ConfigDocument::saveAs(const QString& path)
         path_ = path;
         emit pathChanged(path_);
     }
-    undo_.setClean();
+    markSaved();
     return std::nullopt;
 }
 
@@ -111,15 +133,19 @@ std::optional<QString> ConfigDocument::revert()
     return load(path_);
 }
 
+void ConfigDocument::discardChanges() { reset(saved_, path_); }
+
 void ConfigDocument::reset(const Config& config, const QString& path)
 {
     config_ = config;
+    saved_ = config;
     undo_.clear();
     if (path != path_) {
         path_ = path;
         emit pathChanged(path_);
     }
     emit changed(QString());
+    dirty_ = false;
     emit dirtyChanged(false);
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// The config the workbench edits: one core::Config, an undo stack of key changes, and where it
-// is saved. Every editor changes it through setValue() (one undoable command per change), so
+// The config the workbench edits: one core::Config, the window's undo stack (key changes, and
+// the ground-truth marks that share it), and where it is saved. Every editor changes it through setValue() (one undoable command per change), so
 // the GUI never keeps a parallel copy. Loading and saving go through the core's parser and
 // atomic writer; a failed load leaves the current config untouched.
 #include "core/Config.h"
@@ -20,9 +20,12 @@ public:
     explicit ConfigDocument(QObject* parent = nullptr);
 
     const Config& config() const { return config_; }
+    // The window's one undo stack. Other commands (truth marks) may share it: the config is
+    // dirty when it differs from what was last loaded or saved, not when the stack is unclean.
+    // Setting the stack clean marks the current config as saved.
     QUndoStack* undoStack() { return &undo_; }
     QString path() const { return path_; }
-    bool isDirty() const { return !undo_.isClean(); }
+    bool isDirty() const { return dirty_; }
 
     // Sets one schema key; a change that would make the config invalid (checkConfig) is
     // refused and its message returned. No-op (and no undo entry) when the value is the same.
@@ -37,6 +40,8 @@ public:
     std::optional<QString> saveAs(const QString& path);
     // Back to the last loaded or saved state (clears the undo stack).
     std::optional<QString> revert();
+    // Back to the last loaded or saved values without reading the file (clears the undo stack).
+    void discardChanges();
     // A config that did not come from a file (defaults, a session's own): no path, clean.
     void reset(const Config& config, const QString& path = {});
 
@@ -49,7 +54,12 @@ signals:
     void pathChanged(const QString& path);
 
 private:
+    void updateDirty();
+    void markSaved();
+
     Config config_;
+    Config saved_;  // as last loaded or saved
+    bool dirty_ = false;
     QString path_;
     QUndoStack undo_;
 };

@@ -53,6 +53,11 @@ FrameNavigator::FrameNavigator(QWidget* parent) : QWidget(parent), timer_(new QT
     row->addWidget(countLabel_);
     row->addWidget(loop_);
     row->addWidget(speed_);
+    // Clicked transport controls must not keep the keyboard: Space would press the button
+    // (or tick "loop") again instead of playing, and arrows would move the slider or speed.
+    for (QWidget* w : std::initializer_list<QWidget*>{firstButton_, previousButton_, playButton_, nextButton_,
+                                                      lastButton_, slider_, loop_, speed_})
+        w->setFocusPolicy(Qt::NoFocus);
 
     connect(firstButton_, &QToolButton::clicked, this, &FrameNavigator::first);
     connect(previousButton_, &QToolButton::clicked, this, &FrameNavigator::previous);

@@ -1,6 +1,10 @@
 #include "widgets/PipelineView.h"
 
+#include "core/ColorLut.h"
+
+#include <QEvent>
 #include <QGridLayout>
+#include <QLabel>
 
 namespace omnitune {
 
@@ -20,7 +24,19 @@ PipelineView::PipelineView(QWidget* parent) : QWidget(parent), grid_(new QGridLa
         connect(view, &ImageView::markPressed, this, &PipelineView::markPressed);
         connect(view, &ImageView::markDragged, this, &PipelineView::markDragged);
         connect(view, &ImageView::markReleased, this, &PipelineView::markReleased);
+        // A click on a pane takes the keyboard back from an editor: arrows, Space, T act again.
+        view->setFocusPolicy(Qt::ClickFocus);
+        auto* caption = new QLabel(view);
+        caption->setObjectName(QStringLiteral("caption"));
+        caption->setWordWrap(true);
+        caption->setAlignment(Qt::AlignCenter);
+        caption->setAttribute(Qt::WA_TransparentForMouseEvents);  // marks and pans go to the pane
+        caption->setStyleSheet(QStringLiteral("color: white; background: rgba(0, 0, 0, 190); padding: 4px;"));
+        caption->hide();
+        captions_[std::size_t(i)] = caption;
+        view->installEventFilter(this);
     }
+    setFocusPolicy(Qt::ClickFocus);
     relayout();
 }
 
@@ -60,6 +76,7 @@ void PipelineView::toggleEnlarged(int index)
 
 void PipelineView::setTruth(const TruthOverlay& truth)
 {
+    truth_ = truth;
     for (ImageView* v : panes_) v->setTruth(truth);
 }
 
@@ -75,7 +92,80 @@ void PipelineView::showRun(const PipelineRun& run, std::shared_ptr<const Overlay
     for (int i = 0; i < kPaneCount; ++i) {
         panes_[std::size_t(i)]->setImage(toQImage(*images[i]));
         panes_[std::size_t(i)]->setOverlay(overlay);
+        setCaption(i, QString());
     }
+    // cv::HoughCircles votes internally and returns only circles: there is no accumulator to
+    // show. The pane shows the edges instead, under the circles it returned (the overlay).
+    if (run.config.algorithm == Algorithm::OpenCv) {
+        panes_[Hough]->setImage(toQImage(s.edges));
+        setCaption(Hough, tr("algorithm: opencv. OpenCV's HoughCircles keeps no accumulator: its circles (\"cv\") "
+                             "are drawn over the edges"));
+    } else if (run.config.algorithm == Algorithm::Combined) {
+        for (const BallCandidate& c : run.result.candidates)
+            if (c.source == CandidateSource::OpenCvHough) {
+                setCaption(Hough, tr("specific votes; the \"cv\" circles come from OpenCV's HoughCircles, "
+                                     "which keeps no accumulator"));
+                break;
+            }
+    }
+}
+
+void PipelineView::showUnprocessed(const PipelineRun& run, const QString& why)
+{
+    cv::Mat shown = run.frame;
+    if (run.format == PixelFormat::Uyvy && !shown.empty() && shown.type() == CV_8UC2 && shown.cols % 2 == 0)
+        convertUyvyToBgr(run.frame, shown);
+    for (int i = 0; i < kPaneCount; ++i) {
+        panes_[std::size_t(i)]->setImage(i == Acquired ? toQImage(shown) : QImage());
+        panes_[std::size_t(i)]->setOverlay(nullptr);  // the config's geometry does not fit this frame
+        setCaption(i, QString());
+    }
+    setCaption(Acquired, why);
+}
+
+void PipelineView::clear(const QString& message)
+{
+    for (int i = 0; i < kPaneCount; ++i) {
+        panes_[std::size_t(i)]->setImage(QImage());
+        panes_[std::size_t(i)]->setOverlay(nullptr);
+        setCaption(i, QString());
+    }
+    setTruth(TruthOverlay{});
+    setCaption(Acquired, message);
+}
+
+QString PipelineView::caption(int index) const
+{
+    const QLabel* c = captions_[std::size_t(index)];
+    return c->isHidden() ? QString() : c->text();
+}
+
+void PipelineView::setCaption(int index, const QString& text)
+{
+    QLabel* c = captions_[std::size_t(index)];
+    c->setText(text);
+    c->setVisible(!text.isEmpty());
+    placeCaption(index);
+}
+
+// A band along the pane's bottom edge, as tall as its wrapped text, clear of the title.
+void PipelineView::placeCaption(int index)
+{
+    QLabel* c = captions_[std::size_t(index)];
+    if (c->isHidden()) return;
+    const ImageView* pane = panes_[std::size_t(index)];
+    const int w = pane->width();
+    const int h = std::min(c->heightForWidth(w), pane->height() - 30);
+    c->setGeometry(0, pane->height() - h, w, h);
+    c->raise();
+}
+
+bool PipelineView::eventFilter(QObject* watched, QEvent* event)
+{
+    if (event->type() == QEvent::Resize)
+        for (int i = 0; i < kPaneCount; ++i)
+            if (watched == panes_[std::size_t(i)]) placeCaption(i);
+    return QWidget::eventFilter(watched, event);
 }
 
 }  // namespace omnitune

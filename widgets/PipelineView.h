@@ -1,6 +1,10 @@
 #pragma once
 // The five stage panes of thesis Fig. 4.6 plus the Hough accumulator, side by side under one
 // zoom/pan. Double-clicking a pane enlarges it; double-clicking again brings the others back.
+// Everything on the panes belongs to one run: showing a run replaces images, overlays and
+// captions together, and a source change clears them all until its first frame arrives. A
+// pane's caption (a band along its bottom) says what the image cannot: why a frame was not
+// processed, or that OpenCV's HoughCircles keeps no accumulator.
 #include "widgets/ImageView.h"
 #include "widgets/PipelineRunner.h"
 
@@ -9,6 +13,7 @@
 #include <array>
 
 class QGridLayout;
+class QLabel;
 
 namespace omnitune {
 
@@ -21,6 +26,12 @@ public:
     explicit PipelineView(QWidget* parent = nullptr);
 
     void showRun(const PipelineRun& run, std::shared_ptr<const OverlayData> overlay);
+    // A run the pipeline could not process (`why`): its frame, when it was read, in the
+    // acquired pane with the reason on it; the other panes empty.
+    void showUnprocessed(const PipelineRun& run, const QString& why);
+    // Every pane empty, no overlays, no truth; `message` on the acquired pane.
+    void clear(const QString& message);
+    QString caption(int index) const;
     ImageView* pane(int index) const { return panes_[std::size_t(index)]; }
     ViewTransform* transform() { return &transform_; }
     OverlayOptions& overlays() { return overlays_; }
@@ -30,6 +41,7 @@ public:
     int enlarged() const { return enlarged_; }
     // Ground truth on every pane, and marking mode (left button marks instead of panning).
     void setTruth(const TruthOverlay& truth);
+    const TruthOverlay& truth() const { return truth_; }
     void setMarking(bool on);
 
 signals:
@@ -39,12 +51,19 @@ signals:
     void markDragged(QPointF imagePos);
     void markReleased(QPointF imagePos);
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     void relayout();
+    void setCaption(int index, const QString& text);
+    void placeCaption(int index);
 
     ViewTransform transform_;
     OverlayOptions overlays_;
     std::array<ImageView*, kPaneCount> panes_{};
+    std::array<QLabel*, kPaneCount> captions_{};
+    TruthOverlay truth_;
     QGridLayout* grid_;
     QWidget* side_ = nullptr;
     int enlarged_ = -1;

@@ -1,11 +1,6 @@
 #include "widgets/TruthDocument.h"
 
 #include "widgets/BackupOnce.h"
-#include "core/ConfigWriter.h"
-#include "calib/session/Session.h"
-
-#include <QDir>
-#include <QFile>
 
 namespace omnitune {
 
@@ -13,74 +8,51 @@ TruthDocument::TruthDocument(QObject* parent) : QObject(parent) {}
 
 std::optional<QString> TruthDocument::open(const QString& sessionDir, QStringList* warnings)
 {
-    close();
-    const QString path = QDir(sessionDir).filePath(QString::fromUtf8(kSessionTruthFile.data(), int(kSessionTruthFile.size())));
-    std::map<int, TruthRow> rows;
-    QFile file(path);
-    if (file.exists()) {
-        if (!file.open(QIODevice::ReadOnly)) {
-            close(tr("%1: cannot be read (%2); ground truth cannot be marked").arg(path, file.errorString()));
-            return closedReason_;
-        }
-        const TruthParse parsed = parseTruthCsv(file.readAll().toStdString(), path.toStdString());
-        if (!parsed.ok()) {
-            close(tr("%1; fix or remove the file to mark ground truth").arg(QString::fromStdString(parsed.error->toString())));
-            return closedReason_;
-        }
-        if (warnings)
-            for (const SessionIssue& w : parsed.warnings)
-                *warnings << tr("%1 (dropped when a mark is saved; truth.csv.bak keeps it)").arg(QString::fromStdString(w.toString()));
-        rows = parsed.rows;
-    }
-    path_ = path;
-    rows_ = std::move(rows);
-    closedReason_.clear();
+    std::vector<std::string> found;
+    const auto err = store_.open(sessionDir.toStdString(), &found);
+    if (warnings)
+        for (const auto& w : found) *warnings << QString::fromStdString(w);
     emit changed(-1);
+    if (err) return QString::fromStdString(*err);
     return std::nullopt;
 }
 
 void TruthDocument::close(const QString& why)
 {
-    closedReason_ = why.isEmpty() ? tr("ground truth is kept in a session folder's truth.csv: open a session to mark it") : why;
-    path_.clear();
-    rows_.clear();
-    unsaved_ = false;
+    store_.close(why.toStdString());
     emit changed(-1);
 }
 
-const TruthRow* TruthDocument::row(int frame) const
+// A reopened session keeps its first backup: only the first save of this run writes one.
+bool TruthDocument::keepBackup() const { return !backedUpThisRun(path()); }
+
+std::optional<QString> TruthDocument::saved(const std::optional<std::string>& err, bool wrote)
 {
-    const auto it = rows_.find(frame);
-    return it == rows_.end() ? nullptr : &it->second;
+    if (err) return QString::fromStdString(*err);
+    if (wrote) rememberBackup(path());
+    return std::nullopt;
 }
 
 std::optional<QString> TruthDocument::set(const TruthRow& row)
 {
-    if (!isOpen()) return closedReason_;
-    rows_[row.frame] = row;
-    emit changed(row.frame);
-    return save();
+    bool changedRows = false;
+    const auto err = store_.set(row, keepBackup(), &changedRows);
+    if (changedRows) emit changed(row.frame);
+    return saved(err, changedRows);
 }
 
 std::optional<QString> TruthDocument::remove(int frame)
 {
-    if (!isOpen()) return closedReason_;
-    if (rows_.erase(frame) == 0) return std::nullopt;
-    emit changed(frame);
-    return save();
+    bool changedRows = false;
+    const auto err = store_.remove(frame, keepBackup(), &changedRows);
+    if (changedRows) emit changed(frame);
+    return saved(err, changedRows);
 }
 
 std::optional<QString> TruthDocument::save()
 {
     if (!isOpen()) return std::nullopt;
-    const bool keepBackup = !backedUpThisRun(path_);  // a reopened session keeps its first backup
-    if (const auto err = writeFileAtomically(path_.toStdString(), serializeTruthCsv(rows_), keepBackup)) {
-        unsaved_ = true;
-        return tr("%1 (the marks are kept in memory; the next mark tries again)").arg(QString::fromStdString(*err));
-    }
-    rememberBackup(path_);
-    unsaved_ = false;
-    return std::nullopt;
+    return saved(store_.save(keepBackup()), true);
 }
 
 }  // namespace omnitune

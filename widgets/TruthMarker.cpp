@@ -1,47 +1,104 @@
 #include "widgets/TruthMarker.h"
 
-#include "core/BallModel.h"
-#include "core/BallPosition.h"
+#include "calib/session/TruthMarkRules.h"
 #include "widgets/PipelineView.h"
 #include "widgets/TruthDocument.h"
 
 #include <QAction>
 #include <QMenu>
+#include <QMessageBox>
+#include <QUndoCommand>
+#include <QUndoStack>
 
 #include <cmath>
-#include <functional>
 
 namespace omnitune {
 
-TruthMarker::TruthMarker(TruthDocument* truth, PipelineView* view, QObject* parent)
-    : QObject(parent), truth_(truth), view_(view)
+// One mark (or cleared mark) of one frame: the frame's row before and after. Undo and redo
+// rewrite truth.csv; a command of a session no longer open does nothing but say so.
+class TruthMarkCommand : public QUndoCommand {
+public:
+    TruthMarkCommand(TruthMarker* marker, QString path, int frame, std::optional<TruthRow> before,
+                     std::optional<TruthRow> after, const QString& text)
+        : marker_(marker), path_(std::move(path)), frame_(frame), before_(std::move(before)), after_(std::move(after))
+    {
+        setText(text);
+    }
+    void redo() override { result_ = step(after_, QObject::tr("Redone")); }
+    void undo() override { result_ = step(before_, QObject::tr("Undone")); }
+    int id() const override { return 2; }  // never merged: every mark is its own step
+    const std::optional<QString>& result() const { return result_; }
+
+private:
+    std::optional<QString> step(const std::optional<TruthRow>& row, const QString& how)
+    {
+        const auto err = marker_->apply(path_, frame_, row);
+        if (pushed_ && err) emit marker_->message(*err);
+        if (pushed_ && !err) {
+            emit marker_->frameRequested(frame_);  // show what the undo changed
+            emit marker_->message(QObject::tr("%1 \"%2\": frame %3 is %4 again, saved to truth.csv")
+                                      .arg(how, text()).arg(frame_)
+                                      .arg(row ? TruthMarker::rowText(*row) : QObject::tr("not marked")));
+        }
+        pushed_ = true;
+        return err;
+    }
+
+    TruthMarker* marker_;
+    QString path_;
+    int frame_;
+    std::optional<TruthRow> before_;
+    std::optional<TruthRow> after_;
+    std::optional<QString> result_;
+    bool pushed_ = false;  // the first redo is the push itself: commit() reports that one
+};
+
+TruthMarker::TruthMarker(TruthDocument* truth, PipelineView* view, QUndoStack* undo, QObject* parent)
+    : QObject(parent), truth_(truth), view_(view), undo_(undo)
 {
+    confirm_ = [this](const QString& question) {
+        return QMessageBox::question(view_, tr("Mark ground truth"), question, QMessageBox::Yes | QMessageBox::No,
+                                     QMessageBox::No) == QMessageBox::Yes;
+    };
     connect(view_, &PipelineView::markPressed, this, &TruthMarker::onPressed);
     connect(view_, &PipelineView::markDragged, this, &TruthMarker::onDragged);
     connect(view_, &PipelineView::markReleased, this, &TruthMarker::onReleased);
     connect(truth_, &TruthDocument::changed, this, &TruthMarker::refresh);
 }
 
-void TruthMarker::setFrameCount(int count)
+void TruthMarker::reset(int frameCount)
 {
-    count_ = count;
-    refresh();
+    count_ = frameCount;
+    frame_ = -1;
+    run_.reset();
+    refusal_.clear();
+    setMarking(false);  // a mode left on for the previous source would turn pans into marks
 }
 
 void TruthMarker::setFrame(int frame)
 {
     frame_ = frame;
     dragging_ = false;
+}
+
+void TruthMarker::setRun(std::shared_ptr<const PipelineRun> run)
+{
+    run_ = std::move(run);
     refresh();
 }
 
-void TruthMarker::setRun(std::shared_ptr<const PipelineRun> run) { run_ = std::move(run); }
-
 void TruthMarker::setMarking(bool on)
 {
+    if (on && !truth_->isOpen()) {
+        refusal_ = truth_->closedReason();
+        emit message(refusal_);
+        on = false;
+    }
     marking_ = on;
     dragging_ = false;
     view_->setMarking(on);
+    if (markingAction_) markingAction_->setChecked(on);
+    for (QAction* a : markingKeys_) a->setEnabled(on);
     refresh();
 }
 
@@ -59,23 +116,13 @@ std::optional<QString> TruthMarker::markBall(QPointF centre, double radius)
 {
     if (const auto why = notOnScreen()) return why;
     const Config& c = run_->config;
-    const cv::Mat& image = run_->frame;
-    if (centre.x() < 0 || centre.y() < 0 || centre.x() >= image.cols || centre.y() >= image.rows)
-        return tr("the ball's centre must lie inside the image");
-    const double distancePx = std::hypot(centre.x() - c.geometry.centerX, centre.y() - c.geometry.centerY);
-    if (radius <= 0) radius = BallModel(c.ball).radiusAt(distancePx);
     TruthRow row;
-    row.frame = frame_;
-    row.ballVisible = true;
-    row.px = centre.x();
-    row.py = centre.y();
-    row.radiusPx = radius;
-    try {
-        const BallPosition at = ballPositionAt(row.px, row.py, c.geometry.centerX, c.geometry.centerY, DistanceMap(c.distanceMap));
-        row.xM = at.xM;
-        row.yM = at.yM;
-    } catch (const std::exception& e) {
-        return tr("the config's distance map is not usable: %1").arg(QString::fromStdString(e.what()));
+    if (const auto err = makeBallMark(c, run_->frame.size(), frame_, centre.x(), centre.y(), radius, row))
+        return QString::fromStdString(*err);
+    if (const auto far = radiusFarFromModel(row.radiusPx, c.ball)) {
+        const QString question = tr("Frame %1: %2.\n\nKeep this mark? (In marking mode a left drag sets the ball's "
+                                    "radius; the middle button pans.)").arg(frame_).arg(QString::fromStdString(*far));
+        if (!confirm_(question)) return tr("mark not kept: %1").arg(QString::fromStdString(*far));
     }
     return commit(row);
 }
@@ -83,17 +130,7 @@ std::optional<QString> TruthMarker::markBall(QPointF centre, double radius)
 std::optional<QString> TruthMarker::acceptDetection()
 {
     if (const auto why = notOnScreen()) return why;
-    const BallDetection& d = run_->result.detection;
-    if (!d.found) return markNoBall();
-    TruthRow row;
-    row.frame = frame_;
-    row.ballVisible = true;
-    row.px = d.px;
-    row.py = d.py;
-    row.radiusPx = d.radiusPx;
-    row.xM = d.xM;
-    row.yM = d.yM;
-    return commit(row);
+    return commit(detectionMark(frame_, run_->result.detection));
 }
 
 std::optional<QString> TruthMarker::markNoBall()
@@ -108,23 +145,40 @@ std::optional<QString> TruthMarker::markNoBall()
 std::optional<QString> TruthMarker::clearMark()
 {
     if (frame_ < 0) return tr("no frame on screen");
-    return truth_->remove(frame_);
+    if (!truth_->isOpen()) return truth_->closedReason();
+    const TruthRow* old = truth_->row(frame_);
+    if (!old) return std::nullopt;
+    auto* cmd = new TruthMarkCommand(this, truth_->path(), frame_, *old, std::nullopt, tr("clear the mark of frame %1").arg(frame_));
+    undo_->push(cmd);
+    return cmd->result();
 }
 
 std::optional<QString> TruthMarker::commit(TruthRow row)
 {
     if (frame_ < 0) return tr("no frame on screen");
+    if (!truth_->isOpen()) return truth_->closedReason();
     // A robot pose recorded with the session (simulated tours have one) stays with the frame.
     QString replaced;
+    std::optional<TruthRow> before;
     if (const TruthRow* old = truth_->row(frame_)) {
+        before = *old;
         row.robot = old->robot;
-        replaced = tr(" (replaces %1; mark again or Delete to change it)").arg(rowText(*old));
+        replaced = tr(" (replaces %1; Ctrl+Z undoes)").arg(rowText(*old));
     }
-    if (const auto err = truth_->set(row)) return err;
+    auto* cmd = new TruthMarkCommand(this, truth_->path(), frame_, before, row, tr("mark frame %1").arg(frame_));
+    undo_->push(cmd);
+    if (const auto err = cmd->result()) return err;
     // Every mark is said once: a key press alone shows nothing else when the frame moves on.
     emit message(tr("Frame %1: %2, saved to truth.csv%3").arg(frame_).arg(rowText(row), replaced));
     if (advance_) emit advanceRequested();
     return std::nullopt;
+}
+
+std::optional<QString> TruthMarker::apply(const QString& path, int frame, const std::optional<TruthRow>& row)
+{
+    if (truth_->path() != path)
+        return tr("that mark belongs to %1, which is no longer open: nothing changed").arg(path);
+    return row ? truth_->set(*row) : truth_->remove(frame);
 }
 
 int TruthMarker::nextUnmarked(int from) const
@@ -171,7 +225,7 @@ void TruthMarker::refresh()
 {
     TruthOverlay o;
     o.marking = marking_;
-    if (const TruthRow* r = truth_->row(frame_)) {
+    if (const TruthRow* r = truth_->row(shownFrame())) {
         o.state = r->ballVisible ? TruthOverlay::Ball : TruthOverlay::NoBall;
         o.x = r->px;
         o.y = r->py;
@@ -183,11 +237,12 @@ void TruthMarker::refresh()
 
 void TruthMarker::fillMenu(QMenu* menu)
 {
-    QAction* marking = menu->addAction(tr("&Mark ground truth"));
-    marking->setObjectName("markTruth");
-    marking->setCheckable(true);
-    marking->setShortcut(Qt::Key_T);
-    marking->setStatusTip(tr("Click the ball's centre (drag out to set the radius by hand); the middle button pans"));
+    markingAction_ = menu->addAction(tr("&Mark ground truth"));
+    markingAction_->setObjectName("markTruth");
+    markingAction_->setCheckable(true);
+    markingAction_->setShortcut(Qt::Key_T);
+    markingAction_->setStatusTip(tr("Click the ball's centre (drag out to set the radius by hand); the middle button pans"));
+    connect(markingAction_, &QAction::toggled, this, &TruthMarker::setMarking);
     QAction* advance = menu->addAction(tr("Next frame after each mark"));
     advance->setCheckable(true);
     advance->setChecked(advance_);
@@ -212,18 +267,12 @@ void TruthMarker::fillMenu(QMenu* menu)
                  emit frameRequested(f);
          }},
     };
-    QList<QAction*> keyed;
     for (const auto& item : items) {
         QAction* a = menu->addAction(item.name, this, item.act);
         a->setShortcut(item.key);
-        a->setEnabled(false);
-        keyed << a;
+        a->setEnabled(marking_);
+        markingKeys_ << a;
     }
-    connect(marking, &QAction::toggled, this, [this, keyed](bool on) {
-        setMarking(on);
-        for (QAction* a : keyed) a->setEnabled(on);
-        if (on && !truth_->isOpen()) emit message(truth_->closedReason());
-    });
 }
 
 QString TruthMarker::rowText(const TruthRow& r)
@@ -234,13 +283,13 @@ QString TruthMarker::rowText(const TruthRow& r)
 
 QString TruthMarker::describe() const
 {
-    if (!truth_->isOpen()) return marking_ ? tr("truth: %1").arg(truth_->closedReason()) : QString();
+    if (!truth_->isOpen()) return refusal_.isEmpty() ? QString() : tr("truth: %1").arg(refusal_);
     QString state = tr("truth: not marked");
-    if (const TruthRow* r = truth_->row(frame_)) state = tr("truth: %1").arg(rowText(*r));
+    if (const TruthRow* r = truth_->row(shownFrame())) state = tr("truth: %1").arg(rowText(*r));
     const QString counts = tr("%1 | %2 of %3 frames marked").arg(state).arg(truth_->rows().size()).arg(count_);
     if (!marking_) return counts;
     return tr("MARKING TRUTH: click the ball | A detector's result | N no ball | Del clear | U next unmarked | "
-              "T stop\n%1").arg(counts);
+              "T stop | Ctrl+Z undo\n%1").arg(counts);
 }
 
 }  // namespace omnitune
