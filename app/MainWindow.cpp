@@ -241,7 +241,7 @@ bool MainWindow::openSource(const QString& path)
     nav_->setFrameCount(source_->frameCount());
     nav_->setFrameRate(doc_.config().camera.frameRate);
     marker_->reset(source_->frameCount());
-    openTruth(sessionFolder);
+    openTruth(sessionFolder, session ? cv::Size(session->reader().info().width, session->reader().info().height) : cv::Size());
     recent_->add(path);
     updateTitle();
     showFrame(0);
@@ -265,14 +265,14 @@ void MainWindow::clearForNewSource()
     notices_->clear();  // they were about the previous source
 }
 
-void MainWindow::openTruth(const QString& sessionFolder)
+void MainWindow::openTruth(const QString& sessionFolder, cv::Size frameSize)
 {
     if (sessionFolder.isEmpty()) {  // truth.csv belongs to a session folder (docs/sessions.md)
         truth_.close(tr("this source is not a session folder; ground truth is kept in a session's truth.csv"));
         return;
     }
     QStringList warnings;
-    if (const auto why = truth_.open(sessionFolder, &warnings))
+    if (const auto why = truth_.open(sessionFolder, &warnings, TruthLimits{frameSize}))
         notices_->add(tr("Ground truth cannot be marked:"), {*why});
     else
         notices_->add(tr("Ground truth (truth.csv):"), warnings);

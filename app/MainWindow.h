@@ -76,7 +76,7 @@ private:
     void updateTitle();
     void chooseSource();
     void chooseConfig();
-    void openTruth(const QString& sessionFolder);
+    void openTruth(const QString& sessionFolder, cv::Size frameSize);  // frameSize: bounds the truth rows
     void chooseSourceFile();
 
     ConfigDocument doc_;

@@ -6,10 +6,10 @@ namespace omnitune {
 
 TruthDocument::TruthDocument(QObject* parent) : QObject(parent) {}
 
-std::optional<QString> TruthDocument::open(const QString& sessionDir, QStringList* warnings)
+std::optional<QString> TruthDocument::open(const QString& sessionDir, QStringList* warnings, const TruthLimits& limits)
 {
     std::vector<std::string> found;
-    const auto err = store_.open(sessionDir.toStdString(), &found);
+    const auto err = store_.open(sessionDir.toStdString(), &found, limits);
     if (warnings)
         for (const auto& w : found) *warnings << QString::fromStdString(w);
     emit changed(-1);

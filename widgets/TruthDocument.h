@@ -19,7 +19,7 @@ public:
     explicit TruthDocument(QObject* parent = nullptr);
 
     // Reads `sessionDir`/truth.csv (TruthStore::open); returns why marking is not possible.
-    std::optional<QString> open(const QString& sessionDir, QStringList* warnings = nullptr);
+    std::optional<QString> open(const QString& sessionDir, QStringList* warnings = nullptr, const TruthLimits& limits = {});
     // `why`: what to tell someone who tries to mark while no truth is open.
     void close(const QString& why = {});
     bool isOpen() const { return store_.isOpen(); }

@@ -14,7 +14,8 @@ std::string TruthStore::defaultClosedReason()
     return "ground truth is kept in a session folder's truth.csv: open a session to mark it";
 }
 
-std::optional<std::string> TruthStore::open(const std::string& sessionDir, std::vector<std::string>* warnings)
+std::optional<std::string> TruthStore::open(const std::string& sessionDir, std::vector<std::string>* warnings,
+                                            const TruthLimits& limits)
 {
     close();
     const std::string path = (std::filesystem::path(sessionDir) / std::string(kSessionTruthFile)).string();
@@ -27,7 +28,7 @@ std::optional<std::string> TruthStore::open(const std::string& sessionDir, std::
             close(path + ": cannot be read; ground truth cannot be marked");
             return closedReason_;
         }
-        const TruthParse parsed = parseTruthCsv(text.str(), path);
+        const TruthParse parsed = parseTruthCsv(text.str(), path, limits);
         if (!parsed.ok()) {
             close(parsed.error->toString() + "; fix or remove the file to mark ground truth");
             return closedReason_;

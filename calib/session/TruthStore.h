@@ -16,8 +16,10 @@ namespace omnitune {
 class TruthStore {
 public:
     // Reads `sessionDir`/truth.csv. Returns why marking is not possible (unreadable file,
-    // unusable header) and stays closed then. `warnings` name the rows a save would drop.
-    std::optional<std::string> open(const std::string& sessionDir, std::vector<std::string>* warnings = nullptr);
+    // unusable header) and stays closed then. `warnings` name the rows a save would drop;
+    // `limits` (the session's frame size) refuse rows no frame can hold, as the tools do.
+    std::optional<std::string> open(const std::string& sessionDir, std::vector<std::string>* warnings = nullptr,
+                                    const TruthLimits& limits = {});
     // `why`: what to tell someone who tries to mark while no truth is open (empty: a default).
     void close(const std::string& why = {});
     bool isOpen() const { return !path_.empty(); }
