@@ -28,6 +28,12 @@ namespace {
 // A 1366x768 laptop with a 32 px panel at the top.
 const QRect kLaptop(0, 32, 1366, 768 - 32);
 
+// OMNITUNE_SHOTS=DIR saves what a test shows, for docs/images (run under xvfb at 1366x768).
+void shot(QWidget* w, const QString& name)
+{
+    if (const QByteArray dir = qgetenv("OMNITUNE_SHOTS"); !dir.isEmpty()) w->grab().save(QString::fromLocal8Bit(dir) + "/" + name);
+}
+
 QRect globalRect(const QWidget* w) { return QRect(w->mapToGlobal(QPoint(0, 0)), w->size()); }
 
 QString describe(const QRect& r)
@@ -130,6 +136,7 @@ private slots:
         QTest::keyClicks(search, "valid");
         QTRY_VERIFY(inView(circularity));
         QVERIFY(!panel->editorFor("edges.canny_low")->isVisible());
+        shot(window_.get(), "thresholds-search.png");
         QTest::keyClick(search, Qt::Key_Escape);
         QTRY_VERIFY(panel->editorFor("edges.canny_low")->isVisible());
     }
@@ -151,6 +158,7 @@ private slots:
         QVERIFY(panel->isVisible());
         QVERIFY(window_->tabifiedDockWidgets(dock).contains(window_->findChild<QDockWidget*>("thresholds")));
         QVERIFY(panel->summaryText().contains("vanished"));
+        shot(window_.get(), "whole-session.png");
         // The panes stay where they were (the tab may be a little wider than the thresholds');
         // nothing left the screen.
         const QRect panes = globalRect(window_->pipelineView());
@@ -179,6 +187,7 @@ private slots:
         QVERIFY(window_->tabifiedDockWidgets(dock).contains(window_->findChild<QDockWidget*>("thresholds")));
         dock->raise();
         QTRY_VERIFY(legend->isVisible());
+        shot(window_.get(), "legend.png");
         QVERIFY2(outside(*window_, kLaptop).isEmpty(), qPrintable(outside(*window_, kLaptop)));
     }
 

@@ -57,6 +57,12 @@ private slots:
         const QRectF pane(0, 0, 400, 300);
         const QPointF at = QString(QTest::currentDataTag()).contains("edge") ? QPointF(40, 30) : QPointF(200, 150);
         const std::vector<LabelRequest> labels = crowd(count, at, spread, seed);
+        // The set is crowded: labels drawn where the pane used to put them (up and right of
+        // each circle) would overlap.
+        std::vector<QRectF> naive;
+        for (const LabelRequest& l : labels)
+            naive.emplace_back(l.centre + QPointF(l.radius + 3, -l.radius - 2 - l.size.height()), l.size);
+        QVERIFY(anyOverlap(naive));
         const std::vector<LabelSpot> spots = placeLabels(labels, pane);
         QCOMPARE(spots.size(), labels.size());
         std::vector<QRectF> boxes;

@@ -171,7 +171,25 @@ void ImageView::paintOverlay(QPainter& p) const
         p.setPen(QPen(overlay_colour::accepted(), 3));
         circle(QPointF(d.px, d.py), d.radiusPx + 2);
     }
-    const std::vector<LabelSpot> spots = placeLabels(requests, QRectF(rect()));
+    // Below the pane's title and truth boxes. A label with no room left tries its area alone
+    // ("A3"); the tooltip still gives the scores.
+    const QRectF bounds = QRectF(rect()).adjusted(0, fontMetrics().height() + 8, 0, 0);
+    std::vector<LabelSpot> spots = placeLabels(requests, bounds);
+    std::vector<QRectF> placed;
+    std::vector<std::size_t> crowded;
+    for (std::size_t i = 0; i < spots.size(); ++i) {
+        if (spots[i].placed)
+            placed.push_back(spots[i].box);
+        else if (owners[i] >= 0)
+            crowded.push_back(i);
+    }
+    std::vector<LabelRequest> shortRequests;
+    for (std::size_t i : crowded) {
+        texts[i] = texts[i].section(QLatin1Char(' '), 0, 0);
+        shortRequests.push_back({requests[i].centre, requests[i].radius, QSizeF(fm.horizontalAdvance(texts[i]) + 4, fm.height())});
+    }
+    const std::vector<LabelSpot> shortSpots = placeLabels(shortRequests, bounds, placed);
+    for (std::size_t j = 0; j < crowded.size(); ++j) spots[crowded[j]] = shortSpots[j];
     for (std::size_t i = 0; i < spots.size(); ++i) {
         if (!spots[i].placed) continue;
         const QRectF& box = spots[i].box;
@@ -187,7 +205,7 @@ void ImageView::paintOverlay(QPainter& p) const
             const double len = std::hypot(dir.x(), dir.y());
             if (len > requests[i].radius) p.drawLine(c + dir * (requests[i].radius / len), end);
         }
-        p.fillRect(box, QColor(0, 0, 0, ball ? 170 : 120));  // readable over the carpet and the rings
+        p.fillRect(box, QColor(0, 0, 0, 190));  // readable over the carpet, the rings and a white pane
         p.setPen(colour);
         p.drawText(box, Qt::AlignCenter, texts[i]);
         labels_.push_back({box, owners[i]});

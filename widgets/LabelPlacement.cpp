@@ -34,10 +34,11 @@ QPointF nearestPoint(const QRectF& box, QPointF p)
     return {std::clamp(p.x(), box.left(), box.right()), std::clamp(p.y(), box.top(), box.bottom())};
 }
 
-std::vector<LabelSpot> placeLabels(const std::vector<LabelRequest>& labels, const QRectF& bounds)
+std::vector<LabelSpot> placeLabels(const std::vector<LabelRequest>& labels, const QRectF& bounds,
+                                   const std::vector<QRectF>& reserved)
 {
     std::vector<LabelSpot> spots(labels.size());
-    std::vector<QRectF> taken;  // placed labels
+    std::vector<QRectF> taken = reserved;  // and the labels placed so far
     std::vector<QRectF> circles;
     for (const LabelRequest& l : labels)
         circles.emplace_back(l.centre - QPointF(l.radius, l.radius), QSizeF(2 * l.radius, 2 * l.radius));

@@ -25,8 +25,10 @@ struct LabelSpot {
 };
 
 // Places the labels in the given order (first = most important, placed first). Labels stay
-// inside `bounds` (the pane). Circles are avoided when there is room, never at the cost of a label.
-std::vector<LabelSpot> placeLabels(const std::vector<LabelRequest>& labels, const QRectF& bounds);
+// inside `bounds` (the pane) and off the `reserved` boxes (labels placed before, a title).
+// Circles are avoided when there is room, never at the cost of a label.
+std::vector<LabelSpot> placeLabels(const std::vector<LabelRequest>& labels, const QRectF& bounds,
+                                   const std::vector<QRectF>& reserved = {});
 
 // The point of `box` nearest to `p` (where a leader line ends).
 QPointF nearestPoint(const QRectF& box, QPointF p);

@@ -4,7 +4,6 @@
 
 #include <QFileInfo>
 #include <QHBoxLayout>
-#include <QIcon>
 #include <QHeaderView>
 #include <QLabel>
 #include <QListWidget>
@@ -106,7 +105,6 @@ SessionSweepPanel::SessionSweepPanel(FrameNavigator* navigator, QWidget* parent)
                               "describe the earlier config. Apply again to update them."));
     rerunButton_->setObjectName("rerun");
     rerunButton_->setToolTip(tr("Run the current config over every frame again (Ctrl+R)"));
-    rerunButton_->setIcon(QIcon(QStringLiteral(":/icons/apply-session.png")));  // when the window's resources are in
     previousButton_->setToolTip(tr("Show the previous changed frame"));
     nextButton_->setToolTip(tr("Show the next changed frame"));
 
