@@ -113,10 +113,9 @@ private slots:
 
     void constructorFitsItsScreen()
     {
-        // The window sizes itself for the screen it opens on (here the offscreen 800x600 one).
+        // The window sizes itself for the screen it opens on (offscreen: 800x600, smaller than it wants).
         MainWindow fresh;
         const QRect available = fresh.screen()->availableGeometry();
-        QVERIFY(available.width() < 1366);
         QCOMPARE(fresh.size(), fitWindowGeometry(QSize(1366, 768), QSize(8, 38), available).size());
         QVERIFY(available.contains(fresh.geometry()));
     }
