@@ -4,6 +4,7 @@
 // beside the panes instead of a window over them, the overlay legend names every field of a
 // candidate's label, and the window carries its icons.
 #include "app/MainWindow.h"
+#include "widgets/ImageView.h"
 #include "widgets/OverlayLegend.h"
 #include "widgets/PipelineView.h"
 #include "widgets/ScreenFit.h"
@@ -18,6 +19,7 @@
 #include <QScreen>
 #include <QScrollArea>
 #include <QStatusBar>
+#include <QToolTip>
 #include <QtTest>
 
 using namespace omnitune;
@@ -29,9 +31,17 @@ namespace {
 const QRect kLaptop(0, 32, 1366, 768 - 32);
 
 // OMNITUNE_SHOTS=DIR saves what a test shows, for docs/images (run under xvfb at 1366x768).
-void shot(QWidget* w, const QString& name)
+// With `screen`, the screen's pixels where the window is (a tooltip is a window of its own; xcb).
+void shot(QWidget* w, const QString& name, bool screen = false)
 {
-    if (const QByteArray dir = qgetenv("OMNITUNE_SHOTS"); !dir.isEmpty()) w->grab().save(QString::fromLocal8Bit(dir) + "/" + name);
+    const QByteArray dir = qgetenv("OMNITUNE_SHOTS");
+    if (dir.isEmpty()) return;
+    const QRect r = w->frameGeometry();
+    QPixmap pixels;
+    if (screen && QGuiApplication::platformName() != "offscreen")
+        pixels = w->screen()->grabWindow(0, r.x(), r.y(), r.width(), r.height());
+    if (pixels.isNull()) pixels = w->grab();
+    pixels.save(QString::fromLocal8Bit(dir) + "/" + name);
 }
 
 QRect globalRect(const QWidget* w) { return QRect(w->mapToGlobal(QPoint(0, 0)), w->size()); }
@@ -75,7 +85,7 @@ private slots:
 
     void init()
     {
-        const QString session = tmp_.filePath(QStringLiteral("demo-%1").arg(QDateTime::currentMSecsSinceEpoch()));
+        const QString session = tmp_.filePath(QStringLiteral("%1/demo").arg(QDateTime::currentMSecsSinceEpoch()));
         QVERIFY(copyDemo(session));
         window_ = std::make_unique<MainWindow>();
         window_->show();
@@ -95,6 +105,7 @@ private slots:
 
     void fitsTheAvailableArea()
     {
+        shot(window_.get(), "workbench-1366x768.png");
         // Smaller than the preferred size on a laptop, and centred; on a big screen the preferred size.
         const QRect fitted = fitWindowGeometry(QSize(1366, 768), QSize(8, 38), kLaptop);
         QVERIFY(kLaptop.contains(fitted.adjusted(-4, -34, 4, 4)));  // with its frame
@@ -188,6 +199,26 @@ private slots:
         QTRY_VERIFY(legend->isVisible());
         shot(window_.get(), "legend.png");
         QVERIFY2(outside(*window_, kLaptop).isEmpty(), qPrintable(outside(*window_, kLaptop)));
+    }
+
+    void candidateTooltipExplainsTheLabel()
+    {
+        ImageView* pane = window_->pipelineView()->pane(0);
+        pane->repaint();
+        QVERIFY(!pane->placedLabels().empty());
+        const ImageView::PlacedLabel* label = nullptr;
+        for (const ImageView::PlacedLabel& l : pane->placedLabels())
+            if (l.candidate >= 0) label = &l;
+        QVERIFY(label);
+        const QPoint at = label->box.center().toPoint();
+        QHelpEvent help(QEvent::ToolTip, at, pane->mapToGlobal(at));
+        QApplication::sendEvent(pane, &help);
+        QTRY_VERIFY(QToolTip::isVisible());
+        QVERIFY2(QToolTip::text().contains("circularity") && QToolTip::text().contains("min"), qPrintable(QToolTip::text()));
+        for (QWidget* w : QApplication::topLevelWidgets())
+            if (w->inherits("QTipLabel")) QVERIFY(QTest::qWaitForWindowExposed(w));
+        shot(window_.get(), "candidate-tooltip.png", true);
+        QToolTip::hideText();
     }
 
     void windowHasItsIcons()
