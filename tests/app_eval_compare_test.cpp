@@ -5,6 +5,7 @@
 #include "core/ConfigParser.h"
 #include "core/ConfigWriter.h"
 
+#include <QDir>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -78,6 +79,22 @@ private slots:
         QVERIFY2(r.out.contains("| A: " + config + " | 24 |") && r.out.contains("| B: " + config + " | 24 |"),
                  qPrintable(r.out));
         QVERIFY2(r.out.contains("no frame changed"), qPrintable(r.out));
+    }
+
+    void withoutTruthOnlyDetections()
+    {
+        // A copy of the demo without truth.csv: detections and changes, no ratio to claim.
+        const QString session = tmp_.filePath("notruth");
+        QVERIFY(QDir().mkpath(session + "/frames"));
+        for (const QString& f : {"session.yml", "config.yml"}) QVERIFY(QFile::copy(kDemo + "/" + f, session + "/" + f));
+        for (const QString& f : QDir(kDemo + "/frames").entryList(QDir::Files))
+            QVERIFY(QFile::copy(kDemo + "/frames/" + f, session + "/frames/" + f));
+        const Run r = eval({"--session", session, "--compare", strict_, session + "/config.yml"});
+        QVERIFY2(!r.crashed && r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains(QRegularExpression(R"(\n\| strict\.yml \| 24 \| 0 \| \d+ \(\d+\.\d %\) \| n/a \| n/a \|)")),
+                 qPrintable(r.out));
+        QVERIFY2(r.out.contains("No truth.csv"), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QRegularExpression(R"(Changed frames: \d+ of 24)")), qPrintable(r.out));
     }
 
     void badUseIsRefused_data()
