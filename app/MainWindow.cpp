@@ -7,12 +7,14 @@
 #include "calib/source/FrameSourceFactory.h"
 #include "widgets/MarkedSlider.h"
 #include "widgets/NoticeBar.h"
+#include "widgets/OverlayLegend.h"
 #include "widgets/PipelineView.h"
 #include "widgets/PixelInspector.h"
 #include "widgets/RecentFiles.h"
+#include "widgets/ScreenFit.h"
 #include "calib/session/Session.h"
 #include "calib/source/SessionSource.h"
-#include "widgets/SessionSweepDialog.h"
+#include "widgets/SessionSweepPanel.h"
 #include "widgets/ThresholdPanel.h"
 #include "widgets/TruthMarker.h"
 
@@ -22,6 +24,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
+#include <QIcon>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -31,6 +34,9 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+// The icons (resources/omnitune.qrc) are in a static library: the window pulls them in.
+static void initResources() { Q_INIT_RESOURCE(omnitune); }
+
 namespace omnitune {
 
 MainWindow::MainWindow(QWidget* parent)
@@ -39,6 +45,8 @@ MainWindow::MainWindow(QWidget* parent)
       marker_(new TruthMarker(&truth_, view_, doc_.undoStack(), this)), resultLabel_(new QLabel(this)), truthLabel_(new QLabel(this)),
       timingLabel_(new QLabel(this)), pixelLabel_(new QLabel(this))
 {
+    initResources();
+    setWindowIcon(QIcon(":/icons/omnitune.png"));
     auto* central = new QWidget(this);
     auto* layout = new QVBoxLayout(central);
     layout->setContentsMargins(2, 2, 2, 2);
@@ -65,6 +73,13 @@ MainWindow::MainWindow(QWidget* parent)
     panelDock->setObjectName("thresholds");
     panelDock->setWidget(panel_);
     addDockWidget(Qt::RightDockWidgetArea, panelDock);
+    // What the marks over the panes mean ("A3 98/100/96"): a tab behind the thresholds.
+    auto* legendDock = new QDockWidget(tr("Legend"), this);
+    legendDock->setObjectName("legend");
+    legendDock->setWidget(new OverlayLegend(legendDock));
+    addDockWidget(Qt::RightDockWidgetArea, legendDock);
+    tabifyDockWidget(panelDock, legendDock);
+    panelDock->raise();
 
     auto* table = new CandidateTableView(candidates_, this);
     view_->setSideWidget(table);
@@ -124,7 +139,7 @@ MainWindow::MainWindow(QWidget* parent)
     buildMenus();
     marker_->fillMenu(menuBar()->addMenu(tr("&Truth")));
     updateTitle();
-    resize(1366, 768);
+    fitToScreen(this, QSize(1366, 768));  // a 1366x768 laptop: every dock and the status bar on screen
 }
 
 MainWindow::~MainWindow()
@@ -133,8 +148,8 @@ MainWindow::~MainWindow()
     // still signals "clean" while it is destroyed. Nothing may reach the half-destroyed window.
     doc_.disconnect();
     truth_.disconnect();
-    delete sweepDialog_;  // stops its thread before the members it reports to go
-    sweepDialog_ = nullptr;
+    delete sweepPanel_;  // stops its thread before the members it reports to go
+    sweepPanel_ = nullptr;
 }
 
 void MainWindow::buildMenus()
@@ -175,6 +190,12 @@ void MainWindow::buildMenus()
         panel->setText(tr("&Thresholds panel"));
         view->addAction(panel);
     }
+    if (auto* dock = findChild<QDockWidget*>("legend")) {
+        QAction* legend = dock->toggleViewAction();
+        legend->setText(tr("Overlay &legend"));
+        legend->setIcon(QIcon(":/icons/legend.png"));
+        view->addAction(legend);
+    }
     view->addSeparator();
     OverlayOptions& o = view_->overlays();
     const std::pair<QString, bool*> toggles[] = {
@@ -208,6 +229,7 @@ void MainWindow::buildMenus()
     applyToSessionAction_ = session->addAction(tr("&Apply to whole session"), this, &MainWindow::applyToSession,
                                                QKeySequence(Qt::CTRL + Qt::Key_R));
     applyToSessionAction_->setObjectName("applyToSession");
+    applyToSessionAction_->setIcon(QIcon(":/icons/apply-session.png"));
     applyToSessionAction_->setStatusTip(tr("Run the current and the saved config over every frame and mark what changed"));
     applyToSessionAction_->setEnabled(false);  // until a source is open
 }
@@ -237,7 +259,7 @@ bool MainWindow::openSource(const QString& path)
     source_ = std::move(opened.source);
     sourcePath_ = path;  // Apply to whole session re-opens it in a thread of its own
     applyToSessionAction_->setEnabled(true);
-    if (sweepDialog_) sweepDialog_->reset();  // its results belong to the previous source
+    if (sweepPanel_) sweepPanel_->reset();  // its results belong to the previous source
     nav_->setFrameCount(source_->frameCount());
     nav_->setFrameRate(doc_.config().camera.frameRate);
     marker_->reset(source_->frameCount());
@@ -428,35 +450,42 @@ void MainWindow::updateTitle()
 void MainWindow::applyToSession()
 {
     if (sourcePath_.isEmpty()) return;
-    if (!sweepDialog_) {
-        sweepDialog_ = new SessionSweepDialog(nav_, this);
-        connect(sweepDialog_, &SessionSweepDialog::sweepFinished, this, &MainWindow::onSessionSweepFinished);
-        connect(sweepDialog_, &SessionSweepDialog::rerunRequested, this, &MainWindow::applyToSession);
+    if (!sweepPanel_) {
+        sweepPanel_ = new SessionSweepPanel(nav_, this);
+        connect(sweepPanel_, &SessionSweepPanel::sweepFinished, this, &MainWindow::onSessionSweepFinished);
+        connect(sweepPanel_, &SessionSweepPanel::rerunRequested, this, &MainWindow::applyToSession);
         // From the first edit or save after a sweep (or during one) its numbers and marks
         // describe an older pair of configs: say so rather than pass them off as current.
         const auto outdate = [this] {
-            if (!sweepDialog_->result() && !sweepDialog_->isRunning()) return;
-            sweepDialog_->setOutdated(true);
+            if (!sweepPanel_->result() && !sweepPanel_->isRunning()) return;
+            sweepPanel_->setOutdated(true);
             nav_->setMarksOutdated(sweepMarkKinds());
         };
-        connect(&doc_, &ConfigDocument::changed, sweepDialog_, outdate);
-        connect(&doc_, &ConfigDocument::dirtyChanged, sweepDialog_, outdate);
-        connect(&truth_, &TruthDocument::changed, sweepDialog_, outdate);  // its ratio and false positives
+        connect(&doc_, &ConfigDocument::changed, sweepPanel_, outdate);
+        connect(&doc_, &ConfigDocument::dirtyChanged, sweepPanel_, outdate);
+        connect(&truth_, &TruthDocument::changed, sweepPanel_, outdate);  // its ratio and false positives
+        // A tab beside the thresholds: the panes stay in sight (a window used to cover them).
+        auto* dock = new QDockWidget(tr("Whole session"), this);
+        dock->setObjectName("wholeSession");
+        dock->setWidget(sweepPanel_);
+        addDockWidget(Qt::RightDockWidgetArea, dock);
+        if (auto* thresholds = findChild<QDockWidget*>("thresholds")) tabifyDockWidget(thresholds, dock);
     }
     SweepRequest request;
     request.sourcePath = sourcePath_;
     request.current = doc_.config();
     request.savedConfigPath = doc_.path();  // what the file holds, unsaved edits or not
     request.truth = truth_.rows();
-    sweepDialog_->start(std::move(request));
-    sweepDialog_->show();
-    sweepDialog_->raise();
+    sweepPanel_->start(std::move(request));
+    auto* dock = qobject_cast<QDockWidget*>(sweepPanel_->parentWidget());
+    dock->show();
+    dock->raise();
 }
 
 void MainWindow::onSessionSweepFinished(std::shared_ptr<const SweepResult> result)
 {
     if (!result->ok()) {
-        notices_->add(tr("Apply to whole session failed:"), {result->error});
+        notices_->add(tr("Apply to whole session failed:"), {QString::fromStdString(result->error)});
         return;
     }
     QVector<FrameMark> marks = sweepMarks(*result);
@@ -467,7 +496,7 @@ void MainWindow::onSessionSweepFinished(std::shared_ptr<const SweepResult> resul
             if (!visited.contains(m.frame)) marks.push_back(m);
     }
     nav_->setMarks(marks, sweepMarkKinds());
-    if (sweepDialog_->isOutdated()) nav_->setMarksOutdated(sweepMarkKinds());
+    if (sweepPanel_->isOutdated()) nav_->setMarksOutdated(sweepMarkKinds());
     statusBar()->showMessage(tr("Whole session: a ball in %1 of %2 frames, %3 changed")
                                  .arg(detectionCount(result->current))
                                  .arg(result->visited)

@@ -21,7 +21,7 @@ class ConfigFiles;
 class FrameNavigator;
 class NoticeBar;
 class PipelineView;
-class SessionSweepDialog;
+class SessionSweepPanel;
 struct SweepResult;
 class ThresholdPanel;
 class RecentFiles;
@@ -56,7 +56,7 @@ public slots:
     bool saveConfig();
     bool saveConfigAs();
     // Session > Apply to whole session (Ctrl+R): the current and the saved config over every
-    // frame in the background (SessionSweepDialog); the slider then marks what changed.
+    // frame in the background (SessionSweepPanel, docked); the slider then marks what changed.
     void applyToSession();
 
 signals:
@@ -104,11 +104,11 @@ private:
     int averaged_ = 0;
 
     // Apply to whole session: the source path it re-opens in its own thread, the action
-    // (enabled once a source is open) and the results dialog, made on first use.
+    // (enabled once a source is open) and the results panel, docked on first use.
     void onSessionSweepFinished(std::shared_ptr<const SweepResult> result);
     QString sourcePath_;
     QAction* applyToSessionAction_ = nullptr;
-    SessionSweepDialog* sweepDialog_ = nullptr;
+    SessionSweepPanel* sweepPanel_ = nullptr;
 };
 
 }  // namespace omnitune

@@ -2,6 +2,7 @@
 // session and algorithm.
 #include "calib/eval/BatchRun.h"
 #include "app/CommandLine.h"
+#include "app/EvalCompare.h"
 #include "calib/eval/Evaluation.h"
 #include "calib/session/SessionReader.h"
 #include "calib/source/SessionSource.h"
@@ -23,6 +24,7 @@ const std::vector<OptionSpec> kOptions = {
     {"algorithm", true, false, "A     specific | opencv | combined | all (default: the config's)"},
     {"format", true, false, "F     md (default) or csv"},
     {"max-error", true, false, "M     metres beyond which a detection is a false positive (default 0.5)"},
+    {"compare", true, true, "A B   two configs over one session, side by side, and the frames that changed"},
     {"help", false, false, "      this text"},
 };
 
@@ -51,7 +53,8 @@ std::string whyNoTruth(const SessionReader& session)
 int main(int argc, char** argv)
 {
     quietOpenCvLogs();
-    const CommandLine cl = parseCommandLine(argc, argv, kOptions);
+    const CompareArguments args(argc, argv);  // "--compare A B": two values
+    const CommandLine cl = parseCommandLine(args.argc(), args.argv(), kOptions);
     if (cl.has("help")) {
         std::cout << usageText("omnitune-eval", "Evaluates the detector against sessions' ground truth (thesis ch. 5).",
                                kOptions);
@@ -67,6 +70,7 @@ int main(int argc, char** argv)
         if (!v || *v <= 0) return fail("--max-error must be a positive number of metres, not '" + *m + "'");
         options.maxErrorM = *v;
     }
+    if (cl.has("compare")) return runEvalCompare(cl, options);
     std::vector<std::string> algorithms;
     const std::string algorithm = cl.value("algorithm").value_or("");
     if (algorithm == "all")

@@ -10,7 +10,7 @@
 #include "widgets/MarkedSlider.h"
 #include "calib/session/SessionReader.h"
 #include "calib/source/SessionSource.h"
-#include "widgets/SessionSweepDialog.h"
+#include "widgets/SessionSweepPanel.h"
 #include "WindowTestSupport.h"
 
 #include <QAction>
@@ -83,9 +83,9 @@ private:
         auto* action = window.findChild<QAction*>("applyToSession");
         if (!action || !action->isEnabled()) return nullptr;
         action->trigger();
-        auto* dialog = window.findChild<SessionSweepDialog*>();
+        auto* dialog = window.findChild<SessionSweepPanel*>();
         if (!dialog) return nullptr;
-        QSignalSpy finished(dialog, &SessionSweepDialog::sweepFinished);
+        QSignalSpy finished(dialog, &SessionSweepPanel::sweepFinished);
         if (!finished.wait(60000)) return nullptr;
         return finished.at(0).at(0).value<std::shared_ptr<const SweepResult>>();
     }
@@ -112,7 +112,7 @@ private slots:
         connect(&sweep, &SessionSweep::progress, this, [&progress](int done, int total) { progress.push_back({done, total}); });
         const auto r = runToEnd(sweep);
         QVERIFY(r);
-        QVERIFY2(r->ok(), qPrintable(r->error));
+        QVERIFY2(r->ok(), r->error.c_str());
         QCOMPARE(r->total, kDemoFrames);
         QCOMPARE(r->visited, kDemoFrames);
         QVERIFY(!r->cancelled);
@@ -175,7 +175,7 @@ private slots:
         const auto r = runToEnd(sweep);
         QVERIFY(r);
         QVERIFY(!r->ok());
-        QVERIFY2(r->error.contains("cannot run") && r->error.contains("canny"), qPrintable(r->error));
+        QVERIFY2(QString::fromStdString(r->error).contains("cannot run") && QString::fromStdString(r->error).contains("canny"), r->error.c_str());
 
         SweepRequest missing;
         missing.sourcePath = tmp_.filePath("no-such-session");
@@ -183,7 +183,7 @@ private slots:
         SessionSweep sweep2(missing);
         const auto r2 = runToEnd(sweep2);
         QVERIFY(r2 && !r2->ok());
-        QVERIFY2(r2->error.contains("no-such-session"), qPrintable(r2->error));
+        QVERIFY2(QString::fromStdString(r2->error).contains("no-such-session"), r2->error.c_str());
     }
 
     void actionNeedsASource()
@@ -212,7 +212,7 @@ private slots:
         QVERIFY(!window.document()->setValue("validation.min_circularity_pct", ConfigValue(100.0)));
         const auto r = applyInWindow(window);
         QVERIFY(r);
-        QVERIFY2(r->ok(), qPrintable(r->error));
+        QVERIFY2(r->ok(), r->error.c_str());
         QVERIFY(r->hasSaved && !r->savedIsCurrent);
         QVERIFY(r->comparison.vanished > 0);
         QCOMPARE(r->comparison.appeared, 0);
@@ -223,7 +223,7 @@ private slots:
             QVERIFY(!slider->isOutdated(c.frame, FrameMarkKind::Vanished));
         }
 
-        auto* dialog = window.findChild<SessionSweepDialog*>();
+        auto* dialog = window.findChild<SessionSweepPanel*>();
         const QString text = dialog->summaryText();
         QVERIFY2(text.contains(QString("%1 vanished").arg(r->comparison.vanished)), qPrintable(text));
         QVERIFY2(text.contains("False positives") && !text.contains("no truth.csv"), qPrintable(text));
@@ -262,7 +262,7 @@ private slots:
         QVERIFY(waitForFrame(window, shown));
 
         if (const QByteArray dir = qgetenv("OMNITUNE_SHOTS"); !dir.isEmpty()) {
-            dialog->grab().save(QString::fromLocal8Bit(dir) + "/sweep-dialog.png");
+            dialog->grab().save(QString::fromLocal8Bit(dir) + "/sweep-panel.png");
             window.grab().save(QString::fromLocal8Bit(dir) + "/sweep-window.png");
         }
 
@@ -275,7 +275,7 @@ private slots:
         QVERIFY(slider->isOutdated(vanished, FrameMarkKind::Vanished));
         QVERIFY(slider->hasOutdatedMarks());
         if (const QByteArray dir = qgetenv("OMNITUNE_SHOTS"); !dir.isEmpty()) {
-            dialog->grab().save(QString::fromLocal8Bit(dir) + "/sweep-dialog-outdated.png");
+            dialog->grab().save(QString::fromLocal8Bit(dir) + "/sweep-panel-outdated.png");
             window.grab().save(QString::fromLocal8Bit(dir) + "/sweep-window-outdated.png");
         }
         window.document()->undoStack()->setClean();
@@ -292,11 +292,11 @@ private slots:
         QVERIFY(r && r->ok());
         QVERIFY(!r->hasTruth);
         QCOMPARE(r->visited, kDemoFrames);
-        const QString text = window.findChild<SessionSweepDialog*>()->summaryText();
+        const QString text = window.findChild<SessionSweepPanel*>()->summaryText();
         QVERIFY2(text.contains("no truth.csv: mark ground truth to get false positives"), qPrintable(text));
         QVERIFY2(!text.contains("Detection ratio"), qPrintable(text));
         if (const QByteArray dir = qgetenv("OMNITUNE_SHOTS"); !dir.isEmpty())
-            window.findChild<SessionSweepDialog*>()->grab().save(QString::fromLocal8Bit(dir) + "/sweep-dialog-notruth.png");
+            window.findChild<SessionSweepPanel*>()->grab().save(QString::fromLocal8Bit(dir) + "/sweep-panel-notruth.png");
         // Detections are marked even with nothing to compare against.
         QCOMPARE(window.navigator()->slider()->marks(FrameMarkKind::Detected).size(),
                  int(std::count_if(r->current.begin(), r->current.end(),
@@ -311,13 +311,13 @@ private slots:
         QVERIFY(window.openSource(freshSession()));
         QVERIFY(!window.document()->setValue("validation.min_circularity_pct", ConfigValue(90.0)));
         window.findChild<QAction*>("applyToSession")->trigger();
-        auto* dialog = window.findChild<SessionSweepDialog*>();
+        auto* dialog = window.findChild<SessionSweepPanel*>();
         QVERIFY(dialog && dialog->isRunning());
         auto* cancel = dialog->findChild<QPushButton*>("cancel");
         QVERIFY(cancel->isVisible());
-        QSignalSpy finished(dialog, &SessionSweepDialog::sweepFinished);
+        QSignalSpy finished(dialog, &SessionSweepPanel::sweepFinished);
         // Cancel at the first progress report the dialog itself receives, as a user would.
-        connect(dialog, &SessionSweepDialog::sweepProgress, cancel, [cancel](int done, int) {
+        connect(dialog, &SessionSweepPanel::sweepProgress, cancel, [cancel](int done, int) {
             if (done >= 1 && cancel->isEnabled()) QTest::mouseClick(cancel, Qt::LeftButton);
         });
         QVERIFY(finished.wait(60000));

@@ -73,6 +73,7 @@ private slots:
     void typingSurvivesDocumentChange();
     void wheelNeedsFocus();
     void fitsBesideImagePanes();
+    void searchFiltersAsYouType();
 
 private:
     template <class T>
@@ -493,6 +494,59 @@ void ThresholdPanelTest::fitsBesideImagePanes()
     QTRY_COMPARE(panel_->height(), 600);
     QVERIFY(scroll->verticalScrollBar()->maximum() > 0);
     QVERIFY(!scroll->horizontalScrollBar()->isVisible());
+}
+
+void ThresholdPanelTest::searchFiltersAsYouType()
+{
+    // A short panel (a 1366x768 screen): the validation group is below the fold until searched.
+    panel_->resize(320, 400);
+    QTRY_COMPARE(panel_->height(), 400);
+    auto* scroll = panel_->findChild<QScrollArea*>();
+    QWidget* circularity = panel_->editorFor("validation.min_circularity_pct");
+    QWidget* canny = panel_->editorFor("edges.canny_low");
+    QVERIFY(circularity && canny);
+    const auto inView = [scroll](QWidget* w) {
+        if (!w->isVisible()) return false;
+        const QRect r(w->mapTo(scroll->viewport(), QPoint(0, 0)), w->size());
+        return scroll->viewport()->rect().contains(r);
+    };
+    QVERIFY(!inView(circularity));
+    QVERIFY(inView(canny));
+
+    QLineEdit* search = panel_->searchBox();
+    QVERIFY(search && search->isVisible());
+    search->setFocus();
+    QTest::keyClicks(search, "circ");  // filters as the user types: no Enter
+    QTRY_VERIFY(inView(circularity));
+    QVERIFY(!canny->isVisible());
+    // Every editor still shown matches; the Canny group has none left and goes.
+    for (const ConfigKey& k : configSchema()) {
+        QWidget* e = panel_->editorFor(qs(k.path));
+        if (!e) continue;
+        const QString label = plainText(qobject_cast<QLabel*>(qobject_cast<QFormLayout*>(e->parentWidget()->layout())
+                                                                  ->labelForField(e))->text());
+        QCOMPARE(e->isVisible(), qs(k.path).contains("circ") || label.toLower().contains("circ"));
+    }
+    QVERIFY(!canny->parentWidget()->isVisible());
+    QVERIFY(!panel_->findChild<QLabel*>("noMatch")->isVisible());
+
+    // A group's name finds all of its rows; words combine.
+    search->clear();
+    QTest::keyClicks(search, "validation black");
+    QTRY_VERIFY(panel_->editorFor("validation.min_non_black_pct")->isVisible());
+    QVERIFY(!circularity->isVisible());
+
+    // Nothing matches: the panel says so. Escape clears and everything comes back.
+    search->clear();
+    QTest::keyClicks(search, "zzz");
+    QTRY_VERIFY(panel_->findChild<QLabel*>("noMatch")->isVisible());
+    QVERIFY(panel_->findChild<QLabel*>("noMatch")->text().contains("zzz"));
+    QTest::keyClick(search, Qt::Key_Escape);
+    QCOMPARE(search->text(), QString());
+    QTRY_VERIFY(canny->isVisible());
+    QVERIFY(circularity->isVisible());
+    QVERIFY(!panel_->findChild<QLabel*>("noMatch")->isVisible());
+    QCOMPARE(doc_->undoStack()->count(), 0);  // searching edits nothing
 }
 
 QTEST_MAIN(ThresholdPanelTest)

@@ -1,9 +1,12 @@
 #include "widgets/ImageView.h"
 
 #include "core/BallModel.h"
+#include "widgets/CandidateLabel.h"
+#include "widgets/LabelPlacement.h"
 
 #include <QMouseEvent>
 #include <QPainter>
+#include <QToolTip>
 #include <QWheelEvent>
 
 #include <cmath>
@@ -75,6 +78,7 @@ QPointF ImageView::toWidget(QPointF i) const
 
 void ImageView::paintEvent(QPaintEvent*)
 {
+    labels_.clear();  // paintOverlay() places them again
     QPainter p(this);
     p.fillRect(rect(), QColor(30, 30, 30));
     if (!image_.isNull()) {
@@ -106,14 +110,14 @@ void ImageView::paintOverlay(QPainter& p) const
         p.drawEllipse(toWidget(imageCentre), radius * s, radius * s);
     };
     if (overlays_->geometry) {
-        p.setPen(QPen(QColor(255, 255, 0, 200), 1));
+        p.setPen(QPen(overlay_colour::geometry(), 1));
         circle(centre, c.geometry.innerRadius);
         circle(centre, c.geometry.outerRadius);
         const QPointF w = toWidget(centre);
         p.drawLine(w - QPointF(6, 0), w + QPointF(6, 0));
         p.drawLine(w - QPointF(0, 6), w + QPointF(0, 6));
         if (overlay_->maskOutline) {
-            p.setPen(QPen(QColor(255, 160, 0, 220), 1));
+            p.setPen(QPen(overlay_colour::maskOutline(), 1));
             for (const auto& line : *overlay_->maskOutline) {
                 QPolygonF poly;
                 for (const cv::Point& q : line) poly << toWidget(QPointF(q.x + 0.5, q.y + 0.5));
@@ -122,11 +126,11 @@ void ImageView::paintOverlay(QPainter& p) const
         }
     }
     if (overlays_->areas) {
-        p.setPen(QPen(QColor(0, 200, 255, 160), 1, Qt::DashLine));
+        p.setPen(QPen(overlay_colour::areas(), 1, Qt::DashLine));
         for (double b : c.hough.areaBounds) circle(centre, b);
     }
     if (overlays_->sensors) {
-        p.setPen(QPen(QColor(255, 255, 255, 90), 1));
+        p.setPen(QPen(overlay_colour::sensors(), 1));
         for (int i = 0; i < c.sensors.count; ++i) {
             const double a = 2.0 * M_PI * i / c.sensors.count;
             const QPointF dir(std::cos(a), -std::sin(a));
@@ -136,33 +140,79 @@ void ImageView::paintOverlay(QPainter& p) const
     QFont small = font();
     small.setPointSizeF(std::max(6.0, small.pointSizeF() * 0.8));
     p.setFont(small);
+    const QFontMetricsF fm(small);
+    // The labels are placed together so that crowded candidates near the robot stay readable:
+    // the accepted ball's first, then the candidates in the pipeline's order.
+    std::vector<LabelRequest> requests;
+    std::vector<QString> texts;
+    std::vector<int> owners;  // candidate index, -1 for the ball
+    const BallDetection& d = overlay_->detection;
+    const bool showBall = overlays_->ball && d.found;
+    if (showBall) {
+        texts.push_back(tr("ball  x %1 m  y %2 m").arg(d.xM, 0, 'f', 2).arg(d.yM, 0, 'f', 2));
+        requests.push_back({toWidget(QPointF(d.px, d.py)), (d.radiusPx + 2) * s, QSizeF(fm.horizontalAdvance(texts.back()) + 6, fm.height() + 2)});
+        owners.push_back(-1);
+    }
     if (overlays_->candidates) {
+        for (int i = 0; i < int(overlay_->candidates.size()); ++i) {
+            const BallCandidate& k = overlay_->candidates[i];
+            texts.push_back(candidateLabel(k));
+            requests.push_back({toWidget(QPointF(k.x, k.y)), std::max(k.radiusPx, 2.0) * s,
+                                QSizeF(fm.horizontalAdvance(texts.back()) + 4, fm.height())});
+            owners.push_back(i);
+        }
         for (const BallCandidate& k : overlay_->candidates) {
             const bool ok = k.rejected == RejectReason::None;
-            p.setPen(QPen(ok ? QColor(0, 255, 0) : QColor(255, 90, 60), ok ? 2 : 1));
+            p.setPen(QPen(ok ? overlay_colour::accepted() : overlay_colour::rejected(), ok ? 2 : 1));
             circle(QPointF(k.x, k.y), std::max(k.radiusPx, 2.0));
-            const QString label = QStringLiteral("%1 %2/%3/%4")
-                                      .arg(k.area >= 0 ? QStringLiteral("A%1").arg(k.area + 1) : QStringLiteral("cv"))
-                                      .arg(k.scores.nonGreenPct, 0, 'f', 0)
-                                      .arg(k.scores.nonBlackPct, 0, 'f', 0)
-                                      .arg(k.scores.circularityPct, 0, 'f', 0);
-            p.drawText(toWidget(QPointF(k.x + k.radiusPx, k.y - k.radiusPx)) + QPointF(3, -2), label);
         }
     }
-    if (overlays_->ball && overlay_->detection.found) {
-        const BallDetection& d = overlay_->detection;
-        p.setPen(QPen(QColor(0, 255, 0), 3));
+    if (showBall) {
+        p.setPen(QPen(overlay_colour::accepted(), 3));
         circle(QPointF(d.px, d.py), d.radiusPx + 2);
-        const QString label = QStringLiteral("ball  x %1 m  y %2 m").arg(d.xM, 0, 'f', 2).arg(d.yM, 0, 'f', 2);
-        const QPointF at = toWidget(QPointF(d.px, d.py + d.radiusPx)) + QPointF(-20, 16);
-        p.fillRect(QRectF(at + QPointF(-2, -12), QSizeF(p.fontMetrics().horizontalAdvance(label) + 4, 16)),
-                   QColor(0, 0, 0, 170));
-        p.setPen(QColor(0, 255, 0));
-        p.drawText(at, label);
+    }
+    // Below the pane's title and truth boxes. A label with no room left tries its area alone
+    // ("A3"); the tooltip still gives the scores.
+    const QRectF bounds = QRectF(rect()).adjusted(0, fontMetrics().height() + 8, 0, 0);
+    std::vector<LabelSpot> spots = placeLabels(requests, bounds);
+    std::vector<QRectF> placed;
+    std::vector<std::size_t> crowded;
+    for (std::size_t i = 0; i < spots.size(); ++i) {
+        if (spots[i].placed)
+            placed.push_back(spots[i].box);
+        else if (owners[i] >= 0)
+            crowded.push_back(i);
+    }
+    std::vector<LabelRequest> shortRequests;
+    for (std::size_t i : crowded) {
+        texts[i] = texts[i].section(QLatin1Char(' '), 0, 0);
+        shortRequests.push_back({requests[i].centre, requests[i].radius, QSizeF(fm.horizontalAdvance(texts[i]) + 4, fm.height())});
+    }
+    const std::vector<LabelSpot> shortSpots = placeLabels(shortRequests, bounds, placed);
+    for (std::size_t j = 0; j < crowded.size(); ++j) spots[crowded[j]] = shortSpots[j];
+    for (std::size_t i = 0; i < spots.size(); ++i) {
+        if (!spots[i].placed) continue;
+        const QRectF& box = spots[i].box;
+        const bool ball = owners[i] < 0;
+        const QColor colour = ball || overlay_->candidates[owners[i]].rejected == RejectReason::None
+                                  ? overlay_colour::accepted()
+                                  : overlay_colour::rejected();
+        if (spots[i].leader) {
+            p.setPen(QPen(colour, 1, Qt::DotLine));
+            const QPointF c = requests[i].centre;
+            const QPointF end = nearestPoint(box, c);
+            const QPointF dir = end - c;
+            const double len = std::hypot(dir.x(), dir.y());
+            if (len > requests[i].radius) p.drawLine(c + dir * (requests[i].radius / len), end);
+        }
+        p.fillRect(box, QColor(0, 0, 0, 190));  // readable over the carpet, the rings and a white pane
+        p.setPen(colour);
+        p.drawText(box, Qt::AlignCenter, texts[i]);
+        labels_.push_back({box, owners[i]});
     }
     if (overlays_->cursorRadius && cursor_.x() >= 0) {
         const double d = std::hypot(cursor_.x() - centre.x(), cursor_.y() - centre.y());
-        p.setPen(QPen(QColor(255, 255, 255, 200), 1, Qt::DotLine));
+        p.setPen(QPen(overlay_colour::cursor(), 1, Qt::DotLine));
         circle(cursor_, BallModel(c.ball).radiusAt(d));
     }
 }
@@ -171,7 +221,7 @@ void ImageView::paintTruth(QPainter& p) const
 {
     if (!overlays_->truth && !truth_.marking) return;
     QString label;
-    const QColor colour(255, 60, 255);
+    const QColor colour = overlay_colour::truth();
     if (truth_.state == TruthOverlay::Ball) {
         p.setRenderHint(QPainter::Antialiasing, true);
         p.setPen(QPen(colour, 2, Qt::DashLine));
@@ -193,6 +243,39 @@ void ImageView::paintTruth(QPainter& p) const
     p.fillRect(box, QColor(0, 0, 0, 170));
     p.setPen(colour);
     p.drawText(box, Qt::AlignCenter, label);
+}
+
+int ImageView::candidateAt(QPointF widgetPos) const
+{
+    for (const PlacedLabel& l : labels_)
+        if (l.candidate >= 0 && l.box.contains(widgetPos)) return l.candidate;
+    if (!overlay_ || !overlays_->candidates) return -1;
+    const QPointF at = toImage(widgetPos);
+    int best = -1;
+    double bestD = 0.0;
+    for (int i = 0; i < int(overlay_->candidates.size()); ++i) {
+        const BallCandidate& k = overlay_->candidates[i];
+        const double dist = std::hypot(at.x() - k.x, at.y() - k.y);
+        if (dist <= std::max(k.radiusPx, 2.0) + 2.0 / scale() && (best < 0 || dist < bestD)) {
+            best = i;
+            bestD = dist;
+        }
+    }
+    return best;
+}
+
+bool ImageView::event(QEvent* event)
+{
+    if (event->type() == QEvent::ToolTip) {
+        const auto* help = static_cast<QHelpEvent*>(event);
+        const int i = candidateAt(help->pos());
+        if (i >= 0)
+            QToolTip::showText(help->globalPos(), candidateExplanation(overlay_->candidates[i], overlay_->config.validation), this);
+        else
+            QToolTip::hideText();
+        return true;
+    }
+    return QWidget::event(event);
 }
 
 void ImageView::wheelEvent(QWheelEvent* event)

@@ -10,6 +10,7 @@
 #include <QWidget>
 
 #include <memory>
+#include <vector>
 
 namespace omnitune {
 
@@ -28,6 +29,15 @@ public:
     // Widget position <-> image position under the current transform.
     QPointF toImage(QPointF widgetPos) const;
     QPointF toWidget(QPointF imagePos) const;
+    // The candidate whose label or circle is at this widget position (as last painted), or -1.
+    // Its tooltip explains the label ("A3 98/100/96") in words.
+    int candidateAt(QPointF widgetPos) const;
+    // The label boxes of the last paint, in widget px: candidate index, or -1 for the ball.
+    struct PlacedLabel {
+        QRectF box;
+        int candidate;
+    };
+    const std::vector<PlacedLabel>& placedLabels() const { return labels_; }
 
 signals:
     void hovered(QPointF imagePos);
@@ -38,6 +48,7 @@ signals:
     void markReleased(QPointF imagePos);
 
 protected:
+    bool event(QEvent* event) override;
     void paintEvent(QPaintEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
@@ -49,7 +60,7 @@ protected:
 private:
     double scale() const;
     QPointF imageCenter() const;
-    void paintOverlay(QPainter& p) const;
+    void paintOverlay(QPainter& p) const;  // places the labels (labels_)
     void paintTruth(QPainter& p) const;
 
     QString title_;
@@ -63,6 +74,7 @@ private:
     bool markDown_ = false;
     TruthOverlay truth_;
     QPointF cursor_{-1, -1};  // image position under the mouse, or negative
+    mutable std::vector<PlacedLabel> labels_;  // where the last paint put the labels
 };
 
 // BGR (CV_8UC3) or grey (CV_8UC1) cv::Mat as a QImage (a deep copy).

@@ -5,10 +5,24 @@
 #include "calib/mask/MaskOutline.h"
 #include "core/PipelineResult.h"
 
+#include <QColor>
+
 #include <memory>
 #include <vector>
 
 namespace omnitune {
+
+// The overlay's colours, shared by the panes and the legend that explains them.
+namespace overlay_colour {
+inline QColor geometry() { return QColor(255, 255, 0, 200); }      // robot centre, inner and outer radius
+inline QColor maskOutline() { return QColor(255, 160, 0, 220); }
+inline QColor areas() { return QColor(0, 200, 255, 160); }        // radial area bounds, dashed
+inline QColor sensors() { return QColor(255, 255, 255, 90); }
+inline QColor accepted() { return QColor(0, 255, 0); }             // accepted candidate and ball
+inline QColor rejected() { return QColor(255, 90, 60); }
+inline QColor truth() { return QColor(255, 60, 255); }             // ground truth, dashed
+inline QColor cursor() { return QColor(255, 255, 255, 200); }      // expected ball under the cursor, dotted
+}  // namespace overlay_colour
 
 struct OverlayOptions {
     bool geometry = true;      // robot centre, inner and outer radius, mask outline

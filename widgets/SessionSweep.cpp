@@ -1,77 +1,33 @@
 #include "widgets/SessionSweep.h"
 
-#include "calib/eval/BatchRun.h"
-#include "core/ConfigParser.h"
-#include "core/ConfigWriter.h"
-#include "calib/source/FrameSourceFactory.h"
-#include "core/Pipeline.h"
 #include "core/Progress.h"
 
 #include <QElapsedTimer>
 #include <QThread>
 
+#include <algorithm>
 #include <cmath>
-#include <functional>
 
 namespace omnitune {
 
 namespace {
 
-// core's progress-and-cancel interface on top of the sweep's flag and its progress signal.
+// core's progress-and-cancel interface on top of the sweep's flag and its progress signal:
+// calib reports percents, the window shows frames (the result knows the total by then).
 class SweepProgress : public Progress {
 public:
-    SweepProgress(const std::atomic<bool>& cancel, std::function<void(double)> onUpdate)
-        : cancel_(cancel), onUpdate_(std::move(onUpdate))
+    SweepProgress(SessionSweep& sweep, const ConfigComparisonResult& result) : sweep_(sweep), result_(result) {}
+    void update(double percent) override
     {
+        const int total = result_.total;
+        emit sweep_.progress(int(std::lround(percent * std::max(total, 0) / 100.0)), total);
     }
-    void update(double percent) override { onUpdate_(percent); }
-    bool isCancelRequested() const override { return cancel_.load(); }
+    bool isCancelRequested() const override { return sweep_.isCancelRequested(); }
 
 private:
-    const std::atomic<bool>& cancel_;
-    std::function<void(double)> onUpdate_;
+    SessionSweep& sweep_;
+    const ConfigComparisonResult& result_;
 };
-
-// Same file contents and the same mask: running it again would only repeat the same numbers.
-bool sameDetector(const Config& a, const Config& b)
-{
-    if (serializeConfig(a) != serializeConfig(b)) return false;
-    if (a.mask.empty() || b.mask.empty()) return a.mask.empty() == b.mask.empty();
-    return a.mask.size() == b.mask.size() && a.mask.type() == b.mask.type() && cv::norm(a.mask, b.mask, cv::NORM_INF) == 0;
-}
-
-// The saved config's pipeline, or why there is none.
-struct SavedPipeline {
-    std::unique_ptr<Pipeline> pipeline;
-    bool sameAsCurrent = false;
-    QString note;
-};
-
-SavedPipeline makeSavedPipeline(const QString& path, const Config& current)
-{
-    SavedPipeline saved;
-    if (path.isEmpty()) {
-        saved.note = QObject::tr("The config has never been saved: there is nothing to compare with, the slider "
-                                 "marks detections only.");
-        return saved;
-    }
-    const ConfigLoad load = loadConfig(path.toStdString());
-    if (!load.ok()) {
-        saved.note = QObject::tr("The saved config cannot be loaded, so nothing is compared: %1")
-                         .arg(QString::fromStdString(load.error->toString()));
-        return saved;
-    }
-    if (sameDetector(load.config, current)) {
-        saved.sameAsCurrent = true;
-        return saved;
-    }
-    try {
-        saved.pipeline = std::make_unique<Pipeline>(load.config);
-    } catch (const std::exception& e) {
-        saved.note = QObject::tr("The saved config %1 cannot run, so nothing is compared: %2").arg(path, e.what());
-    }
-    return saved;
-}
 
 }  // namespace
 
@@ -125,82 +81,24 @@ bool SessionSweep::isRunning() const { return thread_ && thread_->isRunning(); }
 
 void SessionSweep::run()
 {
+    ConfigComparisonRequest request;
+    request.sourcePath = request_.sourcePath.toStdString();
+    request.current = request_.current;
+    request.savedConfigPath = request_.savedConfigPath.toStdString();
+    request.truth = request_.truth;
+    request.comparison = request_.comparison;
+    request.evaluation = request_.evaluation;
+
     auto result = std::make_shared<SweepResult>();
+    result->sourcePath = request_.sourcePath;
+    result->savedConfigPath = request_.savedConfigPath;
     QElapsedTimer clock;
     clock.start();
-    try {
-        sweep(*result);
-    } catch (const std::exception& e) {  // nothing escapes the thread: it becomes the message
-        result->error = tr("The sweep stopped: %1").arg(e.what());
-    }
+    SweepProgress progressAdapter(*this, *result);
+    ConfigComparisonResult& run = *result;
+    runConfigComparison(request, run, &progressAdapter);
     result->elapsedS = clock.elapsed() / 1000.0;
     emit finished(result);
-}
-
-void SessionSweep::sweep(SweepResult& result)
-{
-    result.sourcePath = request_.sourcePath;
-    result.savedConfigPath = request_.savedConfigPath;
-    result.hasTruth = !request_.truth.empty();
-    SourceOpen<FrameSource> opened = openFrameSource(request_.sourcePath.toStdString());
-    if (!opened.ok()) {
-        result.error = QString::fromStdString(opened.error);
-        return;
-    }
-    FrameSource& source = *opened.source;
-    std::unique_ptr<Pipeline> current;
-    try {
-        current = std::make_unique<Pipeline>(request_.current);
-    } catch (const std::exception& e) {
-        result.error = tr("The current config cannot run: %1").arg(e.what());
-        return;
-    }
-    SavedPipeline saved = makeSavedPipeline(request_.savedConfigPath, request_.current);
-    result.savedIsCurrent = saved.sameAsCurrent;
-    result.hasSaved = saved.sameAsCurrent || saved.pipeline;
-    result.savedNote = saved.note;
-
-    result.total = source.frameCount();
-    emit progress(0, result.total);
-    SweepProgress progressAdapter(cancel_, [&](double percent) {
-        emit progress(int(std::lround(percent * result.total / 100.0)), result.total);
-    });
-    PipelineResult savedRun;
-    const BatchSummary summary = runBatch(
-        source, *current,
-        [&](int index, const Frame* frame, const PipelineResult& r) {
-            result.current.push_back(outcomeOf(index, r));
-            if (!r.ok() && result.firstFrameError.isEmpty())
-                result.firstFrameError = tr("frame %1: %2").arg(index).arg(QString::fromStdString(r.error));
-            if (!saved.pipeline) return;
-            if (!frame) {
-                result.saved.push_back(outcomeOf(index, r));  // unreadable for both
-                return;
-            }
-            try {
-                saved.pipeline->process(frame->image, frame->format, savedRun, false);
-            } catch (const std::exception& e) {
-                savedRun = PipelineResult{};
-                savedRun.error = e.what();
-            }
-            result.saved.push_back(outcomeOf(index, savedRun));
-        },
-        &progressAdapter);
-    result.visited = summary.frames;
-    result.cancelled = summary.cancelled;
-    if (saved.sameAsCurrent) result.saved = result.current;
-
-    result.currentRow = evaluate(result.current, request_.truth, request_.evaluation);
-    for (const FrameOutcome& o : result.current) {
-        const auto t = request_.truth.find(o.frame);
-        const TruthVerdict v = judge(o, t == request_.truth.end() ? nullptr : &t->second, request_.evaluation);
-        if (v == TruthVerdict::FalsePositive) result.falsePositiveFrames.push_back(o.frame);
-        if (v == TruthVerdict::Missed) result.missedFrames.push_back(o.frame);
-    }
-    if (result.hasSaved) {
-        result.savedRow = evaluate(result.saved, request_.truth, request_.evaluation);
-        result.comparison = compareSessions(result.current, result.saved, request_.comparison);
-    }
 }
 
 }  // namespace omnitune

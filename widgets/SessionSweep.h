@@ -1,22 +1,16 @@
 #pragma once
-// "Apply to whole session": re-runs the config being tuned, and the saved one beside it, over
-// every frame of the source in a thread of its own, and reports detection ratio, false
-// positives (with truth), timing and what changed frame by frame. It opens its own
-// FrameSource (sources are single-threaded and the window holds one), reads each frame once
-// and runs both pipelines on it, so a cancelled sweep still compares the same frames.
-#include "core/Config.h"
-#include "calib/eval/Evaluation.h"
+// "Apply to whole session" off the GUI thread: runs calib's two-config comparison
+// (calib/eval/ConfigComparisonRun.h: the config being tuned and the saved one over every frame)
+// in a thread of its own and reports progress and the result as signals. It opens its own
+// FrameSource (sources are single-threaded and the window holds one).
+#include "calib/eval/ConfigComparisonRun.h"
 #include "widgets/FrameMark.h"
-#include "calib/eval/SessionComparison.h"
-#include "calib/session/TruthCsv.h"
 
 #include <QObject>
 #include <QString>
 
 #include <atomic>
-#include <map>
 #include <memory>
-#include <vector>
 
 class QThread;
 
@@ -31,30 +25,11 @@ struct SweepRequest {
     EvaluationOptions evaluation;
 };
 
-struct SweepResult {
+// calib's result plus what the window shows beside it.
+struct SweepResult : ConfigComparisonResult {
     QString sourcePath;
-    QString savedConfigPath;   // the file the saved column comes from
-    QString error;             // nothing ran (the source or the current config is unusable)
-    int total = 0;             // frames in the source; -1 when the source does not know
-    int visited = 0;           // frames visited (all of them unless cancelled)
-    bool cancelled = false;    // stopped early: everything below covers the visited frames
-    QString firstFrameError;   // the first frame that could not be read or processed, if any
-    double elapsedS = 0.0;     // wall time of the sweep
-
-    bool hasSaved = false;        // the saved config ran: `saved`, `savedRow`, `comparison` valid
-    bool savedIsCurrent = false;  // the saved file holds the same config (ran once, used twice)
-    QString savedNote;            // why there is no comparison, when hasSaved is false
-    bool hasTruth = false;        // truth rows were given: ratios and false positives mean something
-
-    std::vector<FrameOutcome> current;
-    std::vector<FrameOutcome> saved;
-    EvaluationRow currentRow;
-    std::vector<int> falsePositiveFrames;  // the current config's, with truth (judge())
-    std::vector<int> missedFrames;
-    EvaluationRow savedRow;
-    SessionComparison comparison;
-
-    bool ok() const { return error.isEmpty(); }
+    QString savedConfigPath;  // the file the saved column comes from
+    double elapsedS = 0.0;    // wall time of the sweep
 };
 
 // The slider marks of a result: Detected where the current config found a ball, and each
@@ -81,7 +56,6 @@ signals:
 
 private:
     void run();  // the sweep thread
-    void sweep(SweepResult& result);
 
     SweepRequest request_;
     std::atomic<bool> cancel_{false};

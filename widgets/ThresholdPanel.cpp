@@ -17,6 +17,7 @@
 #include <QScrollBar>
 #include <QSignalBlocker>
 #include <QSpinBox>
+#include <QTextDocument>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -178,16 +179,22 @@ ThresholdPanel::ThresholdPanel(ConfigDocument* doc, QWidget* parent) : QWidget(p
     auto* column = new QVBoxLayout(content);
     column->setContentsMargins(0, 0, 0, 0);
     for (const Section& section : kSections) {
-        auto* group = new QGroupBox(tr(section.title), content);
+        const QString title = tr(section.title);
+        auto* group = new QGroupBox(title, content);
         auto* form = new QFormLayout(group);
         form->setContentsMargins(6, 6, 6, 6);
         form->setRowWrapPolicy(QFormLayout::WrapLongRows);  // the area bounds get a line of their own
         form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
         form->setLabelAlignment(Qt::AlignLeft | Qt::AlignVCenter);
         for (const ConfigKey& k : configSchema())
-            if (inSection(k, section.key)) addEditor(k, form);
+            if (inSection(k, section.key)) addEditor(k, form, group, title);
         column->addWidget(group);
     }
+    noMatch_ = new QLabel(content);
+    noMatch_->setObjectName(QStringLiteral("noMatch"));
+    noMatch_->setWordWrap(true);
+    noMatch_->hide();
+    column->addWidget(noMatch_);
     column->addStretch(1);
     // One label column for all groups, so that the editors line up; long names wrap.
     int labelWidth = 0;
@@ -214,8 +221,21 @@ ThresholdPanel::ThresholdPanel(ConfigDocument* doc, QWidget* parent) : QWidget(p
     status_->setPalette(pal);
     status_->hide();
 
+    search_ = new QLineEdit(this);
+    search_->setObjectName(QStringLiteral("search"));
+    search_->setPlaceholderText(tr("Find a threshold (e.g. circ, canny, valid)"));
+    search_->setClearButtonEnabled(true);
+    search_->setToolTip(tr("Shows only the thresholds whose name, key or group contains what you type. "
+                           "Escape clears it."));
+    search_->installEventFilter(this);  // Escape clears
+    connect(search_, &QLineEdit::textChanged, this, [this, scroll](const QString& text) {
+        setFilter(text);
+        scroll->verticalScrollBar()->setValue(0);  // the first match, not the old scroll position
+    });
+
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(search_);
     layout->addWidget(scroll, 1);
     layout->addWidget(status_);
 
@@ -241,7 +261,24 @@ QWidget* ThresholdPanel::editorFor(const QString& key) const { return editors_.v
 
 QString ThresholdPanel::statusMessage() const { return status_->text(); }
 
-void ThresholdPanel::addEditor(const ConfigKey& k, QFormLayout* form)
+void ThresholdPanel::setFilter(const QString& text)
+{
+    const QStringList words = text.toLower().split(QLatin1Char(' '), Qt::SkipEmptyParts);
+    QHash<QGroupBox*, bool> groupShown;
+    bool any = false;
+    for (const Row& row : rows_) {
+        const bool shown = std::all_of(words.begin(), words.end(), [&row](const QString& w) { return row.text.contains(w); });
+        row.label->setVisible(shown);
+        row.editor->setVisible(shown);
+        groupShown[row.group] |= shown;
+        any |= shown;
+    }
+    for (auto it = groupShown.cbegin(); it != groupShown.cend(); ++it) it.key()->setVisible(it.value());
+    noMatch_->setText(tr("No threshold matches \"%1\".").arg(text.trimmed()));
+    noMatch_->setVisible(!any);
+}
+
+void ThresholdPanel::addEditor(const ConfigKey& k, QFormLayout* form, QGroupBox* group, const QString& groupTitle)
 {
     const QString key = qs(k.path);
     QWidget* editor = nullptr;
@@ -334,12 +371,21 @@ void ThresholdPanel::addEditor(const ConfigKey& k, QFormLayout* form)
     label->setToolTip(editor->toolTip());
     label->setBuddy(editor);
     labels_ << label;
+    QTextDocument plain;
+    plain.setHtml(label->text());
+    const QString haystack = key + QLatin1Char(' ') + plain.toPlainText().remove(QChar(0x2060)) + QLatin1Char(' ') + groupTitle;
+    rows_.push_back({label, editor, group, haystack.toLower()});
     form->addRow(label, editor);
     editors_.insert(key, editor);
 }
 
 bool ThresholdPanel::eventFilter(QObject* watched, QEvent* event)
 {
+    if (watched == search_ && event->type() == QEvent::KeyPress && static_cast<QKeyEvent*>(event)->key() == Qt::Key_Escape &&
+        !search_->text().isEmpty()) {
+        search_->clear();
+        return true;
+    }
     if (event->type() == QEvent::ShortcutOverride) {
         // Ctrl+Z / Ctrl+Shift+Z undo and redo the config, also with the cursor still in the
         // field just edited: a value applies on Return, so the field's own text undo would

@@ -1,11 +1,11 @@
 #pragma once
-// The window of "Session > Apply to whole session": a progress bar and Cancel while the sweep
-// runs, then the numbers of the current config beside the saved one (frames, balls found,
-// detection ratio and false positives when there is truth, time per frame) and the frames
-// that changed, each a click away on the frame navigator. Non-modal: tuning goes on beside it.
+// The panel of "Session > Apply to whole session" (the window docks it beside the panes): a
+// progress bar and Cancel while the sweep runs, then the numbers of the current config beside
+// the saved one (frames, balls found, detection ratio and false positives when there is truth,
+// time per frame) and the frames that changed, each a click away on the frame navigator.
 #include "widgets/SessionSweep.h"
 
-#include <QDialog>
+#include <QWidget>
 
 #include <memory>
 
@@ -19,11 +19,11 @@ namespace omnitune {
 
 class FrameNavigator;
 
-class SessionSweepDialog : public QDialog {
+class SessionSweepPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit SessionSweepDialog(FrameNavigator* navigator, QWidget* parent = nullptr);
-    ~SessionSweepDialog() override;
+    explicit SessionSweepPanel(FrameNavigator* navigator, QWidget* parent = nullptr);
+    ~SessionSweepPanel() override;
 
     // Starts a sweep (cancelling one still running) and shows its progress.
     void start(SweepRequest request);

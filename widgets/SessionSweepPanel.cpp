@@ -1,8 +1,7 @@
-#include "widgets/SessionSweepDialog.h"
+#include "widgets/SessionSweepPanel.h"
 
 #include "widgets/FrameNavigator.h"
 
-#include <QDialogButtonBox>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -59,15 +58,14 @@ QString changeLine(const FrameComparison& c)
 
 }  // namespace
 
-SessionSweepDialog::SessionSweepDialog(FrameNavigator* navigator, QWidget* parent)
-    : QDialog(parent), navigator_(navigator), status_(new QLabel(this)), progressBar_(new QProgressBar(this)),
+SessionSweepPanel::SessionSweepPanel(FrameNavigator* navigator, QWidget* parent)
+    : QWidget(parent), navigator_(navigator), status_(new QLabel(this)), progressBar_(new QProgressBar(this)),
       cancelButton_(new QPushButton(tr("Cancel"), this)), note_(new QLabel(this)), table_(new QTableWidget(RowCount, 2, this)),
       changes_(new QLabel(this)), changeList_(new QListWidget(this)),
-      previousButton_(new QPushButton(tr("Previous change"), this)), nextButton_(new QPushButton(tr("Next change"), this)),
-      outdatedNote_(new QLabel(this)), rerunButton_(new QPushButton(tr("Apply again (Ctrl+R)"), this))
+      previousButton_(new QPushButton(tr("Previous"), this)), nextButton_(new QPushButton(tr("Next"), this)),
+      outdatedNote_(new QLabel(this)), rerunButton_(new QPushButton(tr("Apply again"), this))
 {
-    setWindowTitle(tr("Apply to whole session"));
-    setObjectName("sessionSweepDialog");
+    setObjectName("sessionSweepPanel");
     status_->setObjectName("status");
     status_->setWordWrap(true);
     progressBar_->setObjectName("progress");
@@ -106,6 +104,9 @@ SessionSweepDialog::SessionSweepDialog(FrameNavigator* navigator, QWidget* paren
     outdatedNote_->setText(tr("The config changed after this run: these numbers and the slider marks (now faint) "
                               "describe the earlier config. Apply again to update them."));
     rerunButton_->setObjectName("rerun");
+    rerunButton_->setToolTip(tr("Run the current config over every frame again (Ctrl+R)"));
+    previousButton_->setToolTip(tr("Show the previous changed frame"));
+    nextButton_->setToolTip(tr("Show the next changed frame"));
 
     auto* progressRow = new QHBoxLayout;
     progressRow->addWidget(progressBar_, 1);
@@ -114,11 +115,12 @@ SessionSweepDialog::SessionSweepDialog(FrameNavigator* navigator, QWidget* paren
     jumpRow->addWidget(previousButton_);
     jumpRow->addWidget(nextButton_);
     jumpRow->addStretch(1);
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
-    buttons->addButton(rerunButton_, QDialogButtonBox::ActionRole);
+    auto* statusRow = new QHBoxLayout;
+    statusRow->addWidget(status_, 1);
+    statusRow->addWidget(rerunButton_, 0, Qt::AlignTop);
 
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(status_);
+    layout->addLayout(statusRow);
     layout->addLayout(progressRow);
     layout->addWidget(note_);
     layout->addWidget(table_);
@@ -127,23 +129,20 @@ SessionSweepDialog::SessionSweepDialog(FrameNavigator* navigator, QWidget* paren
     layout->addLayout(jumpRow);
     layout->addStretch(0);  // takes the room of the change list when there is none
     layout->addWidget(outdatedNote_);
-    layout->addWidget(buttons);
 
-    connect(cancelButton_, &QPushButton::clicked, this, &SessionSweepDialog::cancel);
-    connect(previousButton_, &QPushButton::clicked, this, &SessionSweepDialog::previousChange);
-    connect(nextButton_, &QPushButton::clicked, this, &SessionSweepDialog::nextChange);
-    connect(rerunButton_, &QPushButton::clicked, this, &SessionSweepDialog::rerunRequested);
-    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::hide);
+    connect(cancelButton_, &QPushButton::clicked, this, &SessionSweepPanel::cancel);
+    connect(previousButton_, &QPushButton::clicked, this, &SessionSweepPanel::previousChange);
+    connect(nextButton_, &QPushButton::clicked, this, &SessionSweepPanel::nextChange);
+    connect(rerunButton_, &QPushButton::clicked, this, &SessionSweepPanel::rerunRequested);
     connect(changeList_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
         navigator_->goTo(item->data(Qt::UserRole).toInt());
     });
     reset();
-    resize(560, 520);
 }
 
-SessionSweepDialog::~SessionSweepDialog() = default;  // ~SessionSweep cancels and waits
+SessionSweepPanel::~SessionSweepPanel() = default;  // ~SessionSweep cancels and waits
 
-void SessionSweepDialog::start(SweepRequest request)
+void SessionSweepPanel::start(SweepRequest request)
 {
     sweep_.reset();  // a sweep still running is cancelled and joined first
     const quint64 run = ++runId_;
@@ -162,7 +161,7 @@ void SessionSweepDialog::start(SweepRequest request)
     sweep_->start();
 }
 
-void SessionSweepDialog::cancel()
+void SessionSweepPanel::cancel()
 {
     if (!sweep_) return;
     sweep_->cancel();
@@ -170,7 +169,7 @@ void SessionSweepDialog::cancel()
     status_->setText(tr("Cancelling..."));
 }
 
-void SessionSweepDialog::reset()
+void SessionSweepPanel::reset()
 {
     sweep_.reset();
     ++runId_;
@@ -181,7 +180,7 @@ void SessionSweepDialog::reset()
     showResult();
 }
 
-void SessionSweepDialog::setOutdated(bool outdated)
+void SessionSweepPanel::setOutdated(bool outdated)
 {
     // During a sweep too: its config was copied at the start, so an edit since then makes the
     // coming result outdated as well.
@@ -189,14 +188,14 @@ void SessionSweepDialog::setOutdated(bool outdated)
     outdatedNote_->setVisible(outdated_ && !sweep_);
 }
 
-void SessionSweepDialog::onProgress(int done, int total)
+void SessionSweepPanel::onProgress(int done, int total)
 {
     progressBar_->setRange(0, std::max(total, 0));  // 0..0: busy, length unknown
     progressBar_->setValue(done);
     emit sweepProgress(done, total);
 }
 
-void SessionSweepDialog::onFinished(std::shared_ptr<const SweepResult> result)
+void SessionSweepPanel::onFinished(std::shared_ptr<const SweepResult> result)
 {
     sweep_.reset();
     result_ = std::move(result);
@@ -205,7 +204,7 @@ void SessionSweepDialog::onFinished(std::shared_ptr<const SweepResult> result)
     emit sweepFinished(result_);
 }
 
-void SessionSweepDialog::showRunning(bool running)
+void SessionSweepPanel::showRunning(bool running)
 {
     progressBar_->setVisible(running);
     cancelButton_->setVisible(running);
@@ -223,7 +222,7 @@ void SessionSweepDialog::showRunning(bool running)
     }
 }
 
-void SessionSweepDialog::showResult()
+void SessionSweepPanel::showResult()
 {
     const bool have = result_ && result_->ok();
     table_->setVisible(have);
@@ -239,7 +238,7 @@ void SessionSweepDialog::showResult()
     const SweepResult& r = *result_;
     const QString name = QFileInfo(r.sourcePath).fileName();
     if (!r.ok())
-        status_->setText(tr("Could not run over %1: %2").arg(name, r.error));
+        status_->setText(tr("Could not run over %1: %2").arg(name, QString::fromStdString(r.error)));
     else if (r.cancelled)
         status_->setText(tr("Cancelled after %1 of %2 frames of %3: the numbers cover those frames only.")
                              .arg(r.visited).arg(r.total).arg(name));
@@ -249,9 +248,11 @@ void SessionSweepDialog::showResult()
     if (r.ok() && r.savedIsCurrent)
         notes << tr("The current config is the saved one: nothing to compare. Change a threshold and apply again "
                     "to see which frames it changes.");
-    if (!r.savedNote.isEmpty()) notes << r.savedNote;
-    if (!r.firstFrameError.isEmpty())
-        notes << tr("%1 frame(s) could not be processed; the first: %2").arg(r.currentRow.failed).arg(r.firstFrameError);
+    if (!r.savedNote.empty()) notes << QString::fromStdString(r.savedNote);
+    if (!r.firstFrameError.empty())
+        notes << tr("%1 frame(s) could not be processed; the first: %2")
+                     .arg(r.currentRow.failed)
+                     .arg(QString::fromStdString(r.firstFrameError));
     note_->setText(notes.join("\n"));
     note_->setVisible(!notes.isEmpty());
     outdatedNote_->setVisible(outdated_);
@@ -265,7 +266,7 @@ void SessionSweepDialog::showResult()
     }
 }
 
-void SessionSweepDialog::fillTable(const SweepResult& r)
+void SessionSweepPanel::fillTable(const SweepResult& r)
 {
     table_->clearSpans();
     const bool compare = r.hasSaved && !r.savedIsCurrent;
@@ -296,7 +297,7 @@ void SessionSweepDialog::fillTable(const SweepResult& r)
     table_->setFixedHeight(height);
 }
 
-void SessionSweepDialog::fillChanges(const SweepResult& r)
+void SessionSweepPanel::fillChanges(const SweepResult& r)
 {
     changeList_->clear();
     const SessionComparison& c = r.comparison;
@@ -326,10 +327,10 @@ void SessionSweepDialog::fillChanges(const SweepResult& r)
     nextButton_->setVisible(any);
 }
 
-bool SessionSweepDialog::nextChange() { return jumpToChange(+1); }
-bool SessionSweepDialog::previousChange() { return jumpToChange(-1); }
+bool SessionSweepPanel::nextChange() { return jumpToChange(+1); }
+bool SessionSweepPanel::previousChange() { return jumpToChange(-1); }
 
-bool SessionSweepDialog::jumpToChange(int step)
+bool SessionSweepPanel::jumpToChange(int step)
 {
     if (!result_) return false;
     std::vector<int> frames;
@@ -350,7 +351,7 @@ bool SessionSweepDialog::jumpToChange(int step)
     return true;
 }
 
-QString SessionSweepDialog::summaryText() const
+QString SessionSweepPanel::summaryText() const
 {
     QStringList lines{status_->text()};
     if (note_->isVisible() || (!note_->text().isEmpty() && result_)) lines << note_->text();
