@@ -255,6 +255,14 @@ ConfigIssue issue(ConfigIssueKind kind, const std::string& file, const std::stri
     return ConfigIssue{kind, file, 0, key, message};
 }
 
+// A Markdown table cell: "|dx|+|dy|" would otherwise split the row into more columns.
+std::string escapeTableCell(const std::string& text)
+{
+    std::string out;
+    for (char ch : text) out += ch == '|' ? std::string("\\|") : std::string(1, ch);
+    return out;
+}
+
 bool strictlyIncreasing(const std::vector<double>& v)
 {
     for (std::size_t i = 1; i < v.size(); ++i)
@@ -423,7 +431,7 @@ std::string configSchemaMarkdown()
             std::string def = formatConfigValue(k.get(defaults));
             if (def.empty()) def = "(empty)";
             md << "| `" << k.path << "` | " << valueTypeName(k.type) << " | " << k.unit << " | `" << def << "`"
-               << (k.fromThesis ? " (thesis)" : "") << " | " << range << " | " << k.meaning << " |\n";
+               << (k.fromThesis ? " (thesis)" : "") << " | " << range << " | " << escapeTableCell(k.meaning) << " |\n";
         }
     }
     return md.str();

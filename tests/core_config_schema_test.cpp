@@ -27,6 +27,21 @@ private slots:
                  "`build/app/omnitune-config --doc > docs/config.md`");
     }
 
+    // Every key's row has its six cells: a "|" in a meaning ("|dx|+|dy|") is escaped.
+    void docsTableRowsHaveSixCells()
+    {
+        std::istringstream md(configSchemaMarkdown());
+        int rows = 0;
+        for (std::string line; std::getline(md, line);) {
+            if (line.rfind("| `", 0) != 0) continue;
+            ++rows;
+            int pipes = 0;
+            for (std::size_t i = 0; i < line.size(); ++i) pipes += line[i] == '|' && (i == 0 || line[i - 1] != '\\');
+            QVERIFY2(pipes == 7, line.c_str());
+        }
+        QCOMPARE(rows, int(configSchema().size()));
+    }
+
     void defaultsAreValid() { QVERIFY(checkConfig(Config{}).empty()); }
 
     void everyKeyIsDescribedAndUnique()
