@@ -4,9 +4,10 @@
 #include "RatioReporter.h"
 
 #include "calib/sim/BallKind.h"
-#include "core/Pipeline.h"
 #include "calib/sim/SceneSimulator.h"
 #include "calib/sim/Tour.h"
+#include "core/FrontEnd.h"
+#include "core/Pipeline.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -17,17 +18,19 @@ namespace {
 using namespace omnitune;
 
 // The frames every benchmark shares: a tour around each of the five balls, and the stages
-// before the Hough transform computed once so that each stage is timed on its own input.
+// before the Hough transform computed once (by the pipeline's own front end) so that each
+// stage is timed on its own input.
 struct Frames {
     Config config;
     std::vector<cv::Mat> bgr;
     std::vector<cv::Mat> classes;
     std::vector<cv::Mat> binary;
     std::vector<cv::Mat> edges;
-    Geometry geometry;
+    FrontEnd frontEnd;
+    const Geometry& geometry;
     BallModel ball;
 
-    Frames() : geometry(config.geometry, config.mask), ball(config.ball)
+    Frames() : frontEnd(config), geometry(frontEnd.geometry()), ball(config.ball)
     {
         const SceneSimulator sim(config);
         for (BallKind kind : kAllBallKinds) {
@@ -36,16 +39,11 @@ struct Frames {
             tour.ball = kind;
             for (const SceneOptions& scene : makeTour(tour)) bgr.push_back(sim.render(scene));
         }
-        const ColorLut lut(config.colors);
-        CannyDetector canny;
         for (const cv::Mat& f : bgr) {
-            cv::Mat c(f.size(), CV_8UC1, cv::Scalar(0));
-            lut.segment(f, PixelFormat::Bgr8, geometry.spans(), c);
+            cv::Mat c;
             cv::Mat b;
-            makeBinary(c, geometry, b);
             cv::Mat e;
-            canny.detect(b, config.edges, e);
-            cv::bitwise_and(e, geometry.edgeMask(), e);
+            frontEnd.process(f, PixelFormat::Bgr8, c, b, e);
             classes.push_back(c);
             binary.push_back(b);
             edges.push_back(e);

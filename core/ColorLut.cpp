@@ -5,7 +5,6 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
-#include <stdexcept>
 #include <string>
 
 namespace omnitune {
@@ -59,8 +58,8 @@ void convertUyvyToBgr(const cv::Mat& uyvy, cv::Mat& bgr)
 
 void ColorLut::compile(const ColorLutOptions& options)
 {
-    if (options.bits < 4 || options.bits > 8)
-        throw std::invalid_argument("colors.lut_bits = " + std::to_string(options.bits) + " is outside 4..8");
+    // colors.lut_bits is checked once, by checkConfig(); this guards the table size and shifts.
+    CV_Assert(options.bits >= 4 && options.bits <= 8);
     bits_ = options.bits;
     shift_ = 8 - bits_;
     const int levels = 1 << bits_;

@@ -60,7 +60,7 @@ std::vector<ConfigKey> buildSchema()
     // camera
     s.push_back(textKey("camera.model", "Camera model, informational (e.g. \"PointGrey Flea2\")",
                         [](auto& c) -> auto& { return c.camera.model; }));
-    s.push_back(doubleKey("camera.frame_rate", "frames/s", 1, 240, true, "Acquisition rate; the per-frame budget is its inverse (30 fps: 33.3 ms)",
+    s.push_back(doubleKey("camera.frame_rate", "frames/s", 1, 240, true, "Acquisition rate; the per-frame time budget is its inverse",
                           [](auto& c) -> auto& { return c.camera.frameRate; }));
     s.push_back(intKey("camera.exposure", "register", 0, 4095, false, "IIDC exposure; too high blurs a moving ball, too low darkens the carpet",
                        [](auto& c) -> auto& { return c.camera.exposure; }));
@@ -75,7 +75,7 @@ std::vector<ConfigKey> buildSchema()
 
     // colour classes
     s.push_back(intKey("colors.lut_bits", "bits", 4, 8, false,
-                       "LUT index bits per channel: 6 gives a 256 KiB table that stays in L2 (see docs/performance.md); fewer bits coarsen class borders",
+                       "LUT index bits per channel: the table has 2^(3*bits) entries; more bits leave the L2 cache (see docs/performance.md), fewer coarsen class borders",
                        [](auto& c) -> auto& { return c.colors.bits; }));
     for (ColorClass cls : kClassificationOrder) {
         const std::string p = "colors." + std::string(colorClassKey(cls)) + ".";
@@ -147,9 +147,14 @@ std::vector<ConfigKey> buildSchema()
                           [](auto& c) -> auto& { return c.ball.squareRatio; }));
 
     // edges
-    s.push_back(intKey("edges.canny_low", "gradient", 0, 1020, true, "Canny low threshold on the L1 gradient |dx|+|dy|: edges grow along pixels above it; lower: noisier, broken lines join",
+    s.push_back(intKey("edges.canny_low", "gradient", 0, 1020, true, "Canny low threshold on the L1 gradient |dx|+|dy|: edges grow along pixels above it. Barely matters: on the "
+                       "green / non-green image (levels 0 and 255) every gradient is a multiple of 510, so any value below 510 "
+                       "gives the same edges; up to 1019 only rings around one-pixel specks drop out, from 1020 borders break apart",
                        [](auto& c) -> auto& { return c.edges.cannyLow; }));
-    s.push_back(intKey("edges.canny_high", "gradient", 0, 1020, true, "Canny high threshold on the L1 gradient |dx|+|dy|: edges start above it; higher: faint ball borders vanish",
+    s.push_back(intKey("edges.canny_high", "gradient", 0, 1020, true, "Canny high threshold on the L1 gradient |dx|+|dy|: edges start above it. Barely matters: on the "
+                       "green / non-green image (levels 0 and 255) every gradient is a multiple of 510, so any value below 510 "
+                       "gives the same edges; up to 1019 only rings around one-pixel specks drop out; from 1020 edges start only "
+                       "at steps and corners (straight borders vanish), from 1530 none",
                        [](auto& c) -> auto& { return c.edges.cannyHigh; }));
 
     // specific Hough
@@ -168,15 +173,16 @@ std::vector<ConfigKey> buildSchema()
                         [](auto& c) -> auto& { return c.hough.radiusAtCentre; }));
 
     // OpenCV Hough
-    s.push_back(doubleKey("opencv_hough.dp", "ratio", 1, 4, true, "Inverse accumulator resolution of cv::HoughCircles (2: half width and height)",
+    s.push_back(doubleKey("opencv_hough.dp", "ratio", 1, 4, true, "Inverse accumulator resolution of cv::HoughCircles (1: the image's, larger: coarser and faster)",
                           [](auto& c) -> auto& { return c.opencvHough.dp; }));
     s.push_back(doubleKey("opencv_hough.min_dist", "px", 1, 1000, true, "Minimum distance between circle centres; too small duplicates a ball, too large misses balls",
                           [](auto& c) -> auto& { return c.opencvHough.minDist; }));
-    s.push_back(doubleKey("opencv_hough.canny_high", "gradient", 1, 1020, true, "High threshold of HoughCircles' internal Canny (its low threshold is half)",
+    s.push_back(doubleKey("opencv_hough.canny_high", "gradient", 1, 1020, true, "High threshold of HoughCircles' internal Canny (its low threshold is half). On the green / non-green image "
+                          "every gradient is a multiple of 510, so any value below 510 gives the same circles",
                           [](auto& c) -> auto& { return c.opencvHough.cannyHigh; }));
     s.push_back(doubleKey("opencv_hough.acc_threshold", "votes", 1, 1000, false, "Accumulator votes a circle centre needs; lower: more (and false) circles, higher: small balls missed",
                           [](auto& c) -> auto& { return c.opencvHough.accThreshold; }));
-    s.push_back(intKey("opencv_hough.min_radius", "px", 1, 200, true, "Smallest circle searched; below 3 px there is no ball",
+    s.push_back(intKey("opencv_hough.min_radius", "px", 1, 200, true, "Smallest circle searched; smaller circles are pixel noise, not a ball",
                        [](auto& c) -> auto& { return c.opencvHough.minRadius; }));
     s.push_back(intKey("opencv_hough.max_radius", "px", 1, 200, true, "Largest circle searched (the ball engaged in the robot)",
                        [](auto& c) -> auto& { return c.opencvHough.maxRadius; }));
@@ -195,7 +201,7 @@ std::vector<ConfigKey> buildSchema()
                           [](auto& c) -> auto& { return c.validation.minCircularityPct; }));
     s.push_back(doubleKey("validation.radius_tolerance", "fraction", 0, 1, true, "Edges count within expected radius +- this fraction",
                           [](auto& c) -> auto& { return c.validation.radiusTolerance; }));
-    s.push_back(doubleKey("validation.min_radius_band_px", "px", 0, 10, false, "The +- band is never thinner than this (15 % of a 5 px ball is under a pixel; borders blur ~1 px inwards)",
+    s.push_back(doubleKey("validation.min_radius_band_px", "px", 0, 10, false, "The +- band is never thinner than this (radius_tolerance of a small ball is under a pixel; borders blur ~1 px inwards)",
                           [](auto& c) -> auto& { return c.validation.minRadiusBandPx; }));
     s.push_back(doubleKey("validation.min_radius_px", "px", 0, 100, false,
                           "Candidates whose expected radius is below this are rejected: by shape a smaller ball looks like a line corner",
@@ -204,14 +210,26 @@ std::vector<ConfigKey> buildSchema()
                         "A ray counts only if the first edge from the centre lies in the band; 0: any edge in the band (thesis' text, passes line corners)",
                         [](auto& c) -> auto& { return c.validation.firstEdgeOnly; }));
     s.push_back(boolKey("validation.border_into_carpet", false,
-                        "A ray counts only if carpet (or an unprocessed pixel) lies 1.5 px beyond its edge; rejects line corners",
+                        "A ray counts only if carpet (or an unprocessed pixel) lies beyond_edge_px beyond its edge; rejects line corners",
                         [](auto& c) -> auto& { return c.validation.borderIntoCarpet; }));
     s.push_back(boolKey("validation.ignore_occluded_rays", false,
                         "Rays whose border leads into black (a robot hiding part of the ball) are not judged; 0: they count as misses",
                         [](auto& c) -> auto& { return c.validation.ignoreOccludedRays; }));
     s.push_back(doubleKey("validation.max_run_on_pct", "%", 0, 100, false,
-                          "Rejects a candidate when on more of its rays the centre's colour runs on past 1.3 radii (line corners and ends); 100: off",
+                          "Rejects a candidate when on more of its rays the centre's colour runs on past run_on_reach (line corners and ends); 100: off",
                           [](auto& c) -> auto& { return c.validation.maxRunOnPct; }));
+    s.push_back(doubleKey("validation.run_on_reach", "radii", 1, 3, false,
+                          "How far out, in expected radii, the centre's colour must run on for a ray to count in the run-on test; "
+                          "lower: balls beside a line run on too, higher: far line corners pass",
+                          [](auto& c) -> auto& { return c.validation.runOnReach; }));
+    s.push_back(doubleKey("validation.min_usable_ray_share", "fraction", 0, 1, false,
+                          "Circularity is judged only when this share of the circle's rays crosses processed pixels (the rest lie on "
+                          "the robot body or rods); below it the candidate fails; lower: judges a mostly hidden circle by a few rays",
+                          [](auto& c) -> auto& { return c.validation.minUsableRayShare; }));
+    s.push_back(doubleKey("validation.beyond_edge_px", "px", 0.5, 10, false,
+                          "How far beyond a ray's edge its colour is read (border_into_carpet, ignore_occluded_rays); smaller: reads "
+                          "the blurred border itself, larger: reaches a neighbouring line or robot",
+                          [](auto& c) -> auto& { return c.validation.beyondEdgePx; }));
 
     // algorithm
     ConfigKey alg{"algorithm.method", ValueType::Choice, "", 0, 0,
@@ -235,6 +253,14 @@ std::string formatNumber(double v)
 ConfigIssue issue(ConfigIssueKind kind, const std::string& file, const std::string& key, const std::string& message)
 {
     return ConfigIssue{kind, file, 0, key, message};
+}
+
+// A Markdown table cell: "|dx|+|dy|" would otherwise split the row into more columns.
+std::string escapeTableCell(const std::string& text)
+{
+    std::string out;
+    for (char ch : text) out += ch == '|' ? std::string("\\|") : std::string(1, ch);
+    return out;
 }
 
 bool strictlyIncreasing(const std::vector<double>& v)
@@ -348,7 +374,11 @@ std::vector<ConfigIssue> checkConfig(const Config& c, const std::string& file)
         if (r.sMin > r.sMax) inconsistent(p + ".s_min", "s_min is above s_max");
         if (r.vMin > r.vMax) inconsistent(p + ".v_min", "v_min is above v_max");
     }
-    if (!c.mask.empty() && (c.mask.cols != c.geometry.imageWidth || c.mask.rows != c.geometry.imageHeight))
+    if (!c.mask.empty() && c.mask.type() != CV_8UC1)
+        out.push_back(issue(ConfigIssueKind::MaskError, file, "geometry.mask_file",
+                            "the mask has " + std::to_string(c.mask.channels()) + " channel(s) of depth " +
+                                std::to_string(c.mask.depth()) + "; it must be one 8-bit channel"));
+    else if (!c.mask.empty() && (c.mask.cols != c.geometry.imageWidth || c.mask.rows != c.geometry.imageHeight))
         out.push_back(issue(ConfigIssueKind::MaskError, file, "geometry.mask_file",
                             "the mask is " + std::to_string(c.mask.cols) + "x" + std::to_string(c.mask.rows) +
                                 " but the image is " + std::to_string(c.geometry.imageWidth) + "x" +
@@ -401,7 +431,7 @@ std::string configSchemaMarkdown()
             std::string def = formatConfigValue(k.get(defaults));
             if (def.empty()) def = "(empty)";
             md << "| `" << k.path << "` | " << valueTypeName(k.type) << " | " << k.unit << " | `" << def << "`"
-               << (k.fromThesis ? " (thesis)" : "") << " | " << range << " | " << k.meaning << " |\n";
+               << (k.fromThesis ? " (thesis)" : "") << " | " << range << " | " << escapeTableCell(k.meaning) << " |\n";
         }
     }
     return md.str();

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
+
+#include <opencv2/core.hpp>
 
 namespace omnitune {
 
@@ -10,14 +11,9 @@ DistanceMap::DistanceMap(const DistanceMapOptions& options) : options_(options)
 {
     const auto& x = options.pixelRadii;
     const auto& y = options.groundDistances;
-    if (x.size() < 2 || x.size() != y.size())
-        throw std::invalid_argument("distance_map: pixel_radii and ground_distances need the same number (>= 2) of points");
-    for (std::size_t i = 1; i < x.size(); ++i) {
-        if (!(x[i] > x[i - 1])) throw std::invalid_argument("distance_map.pixel_radii must be strictly increasing");
-        if (!(y[i] > y[i - 1])) throw std::invalid_argument("distance_map.ground_distances must be strictly increasing");
-    }
-    if (!(options.viewpointHeight > options.ballRadius))
-        throw std::invalid_argument("distance_map.viewpoint_height must be above distance_map.ball_radius");
+    // User values (increasing points, viewpoint above the ball) are checked once, by
+    // checkConfig(); this guards the tables below against a caller that skipped it.
+    CV_Assert(x.size() >= 2 && x.size() == y.size());
 
     // Fritsch-Carlson tangents: monotone data gives a monotone interpolant.
     const std::size_t n = x.size();

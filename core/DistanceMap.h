@@ -17,7 +17,7 @@ struct DistanceMapOptions {
 class DistanceMap {
 public:
     DistanceMap() = default;
-    // Throws std::invalid_argument when the points are not strictly increasing or too few.
+    // `options` must have passed checkConfig() (the one place user values are checked).
     explicit DistanceMap(const DistanceMapOptions& options);
 
     // Ground distance (m) of the point seen at image radius `px`. Beyond the last point the

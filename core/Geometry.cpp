@@ -3,7 +3,6 @@
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 namespace omnitune {
@@ -12,12 +11,10 @@ Geometry::Geometry(const GeometryOptions& options, const cv::Mat& mask) : option
 {
     const int w = options.imageWidth;
     const int h = options.imageHeight;
-    if (w <= 0 || h <= 0)
-        throw std::invalid_argument("geometry.image_width/height must be positive");
-    if (!mask.empty() && (mask.cols != w || mask.rows != h || mask.type() != CV_8UC1))
-        throw std::invalid_argument("mask is " + std::to_string(mask.cols) + "x" + std::to_string(mask.rows) +
-                                    " but geometry.image_width/height is " + std::to_string(w) + "x" +
-                                    std::to_string(h) + " (the mask must be one 8-bit channel of that size)");
+    // The size and the mask are checked once, by checkConfig() (it names the mask file); this
+    // guards the per-pixel tables against a caller that skipped it.
+    CV_Assert(w > 0 && h > 0);
+    CV_Assert(mask.empty() || (mask.cols == w && mask.rows == h && mask.type() == CV_8UC1));
     used_.create(h, w, CV_8UC1);
     distance_.create(h, w, CV_32FC1);
     const double inner2 = options.innerRadius * options.innerRadius;

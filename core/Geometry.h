@@ -30,7 +30,7 @@ class Geometry {
 public:
     Geometry() = default;
     // `mask` is optional (empty, or CV_8UC1 of the image size; non-zero = process).
-    // Throws std::invalid_argument when the mask size differs from the image size.
+    // `options` and `mask` must have passed checkConfig() (the one place user values are checked).
     Geometry(const GeometryOptions& options, const cv::Mat& mask);
 
     const GeometryOptions& options() const { return options_; }

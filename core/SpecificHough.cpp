@@ -7,19 +7,16 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
-#include <stdexcept>
 
 namespace omnitune {
 
 SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry& geometry, const BallModel& ball)
     : options_(options), geometry_(&geometry), ball_(&ball)
 {
+    // User values are checked once, by checkConfig(); this guards the area index image (one
+    // byte per pixel, 255 = none) against a caller that skipped it.
     const auto& b = options.areaBounds;
-    if (b.empty() || b.size() > 254) throw std::invalid_argument("hough.area_bounds needs 1..254 bounds");
-    for (std::size_t i = 1; i < b.size(); ++i)
-        if (!(b[i] > b[i - 1])) throw std::invalid_argument("hough.area_bounds must be strictly increasing");
-    if (options.nearRobotWeight < 1 || options.nearRobotWeight > 10)
-        throw std::invalid_argument("hough.near_robot_weight must be 1..10");
+    CV_Assert(!b.empty() && b.size() < 255);
 
     // For each edge distance d, the centres a ball edge there may belong to: in direction phi
     // from the ray, at the radius r solving r = R(d + r cos phi), about one point per pixel of

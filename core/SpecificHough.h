@@ -35,7 +35,7 @@ class SpecificHough {
 public:
     SpecificHough() = default;
     // Precomputes the circle offsets per radius, the vote weight image and the area index of
-    // every pixel. Throws std::invalid_argument on an inconsistent configuration.
+    // every pixel. `options` must have passed checkConfig() (the one place user values are checked).
     SpecificHough(const SpecificHoughOptions& options, const Geometry& geometry, const BallModel& ball);
 
     // `edges`: CV_8UC1 edge image; `binary`: CV_8UC1, 0 = non-green (where a centre may lie).

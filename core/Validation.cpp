@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <optional>
 
 namespace omnitune {
 
@@ -15,154 +16,197 @@ namespace {
 // Circle search rays: about one per pixel of circumference, never fewer than 16.
 int rayCount(double radius) { return std::max(16, int(std::ceil(2.0 * M_PI * radius))); }
 
-// Rays whose whole search band lies on unprocessed pixels (robot body, rods) say nothing about
-// the shape; they are left out. Under this share of usable rays the circle is not judged.
-constexpr double kMinUsableRayShare = 0.25;
+// The circle being scored and the images it is scored on.
+struct Circle {
+    int x;
+    int y;
+    double radius;
+    const cv::Mat& classes;
+    const cv::Mat& edges;
+    const Geometry& geometry;
 
-// How far out, in expected radii, the centre's colour must run on for a ray to count in the
-// run-on test: past the ball's blurred border (~1 px) but not as far as a nearby line (balls
-// beside a line keep a strip of carpet). 1.5 and 1.75 left far line corners at 11 %, barely
-// above a white ball touching a line (10 %); 1.3 puts them at 18.5 % and more.
-constexpr double kRunOnReach = 1.3;
+    // Inside the image and processed: its class and edge say something about the scene.
+    bool known(cv::Point p) const
+    {
+        return p.x >= 0 && p.y >= 0 && p.x < classes.cols && p.y < classes.rows && geometry.isUsed(p.x, p.y);
+    }
+    ColorClass classAt(cv::Point p) const { return ColorClass(classes.ptr<std::uint8_t>(p.y)[p.x]); }
+    bool edgeAt(cv::Point p) const { return edges.ptr<std::uint8_t>(p.y)[p.x] != 0; }
+    // The pixel `r` px out from the centre in the unit direction (ca, sa).
+    cv::Point along(double r, double ca, double sa) const
+    {
+        return {int(std::lround(x + r * ca)), int(std::lround(y + r * sa))};
+    }
+};
 
-}  // namespace
-
-ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,
-                             const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options)
+// Thesis' first two tests: the non-green and non-black shares of the processed pixels in the
+// candidate's square.
+void scoreSquare(const Circle& c, int squareSide, ValidationScores& s)
 {
-    ValidationScores s;
-    const int w = classes.cols;
-    const int h = classes.rows;
     const int half = squareSide / 2;
     int used = 0;
     int green = 0;
     int black = 0;
-    for (int yy = std::max(0, y - half); yy <= std::min(h - 1, y + half); ++yy) {
-        const std::uint8_t* c = classes.ptr<std::uint8_t>(yy);
-        const std::uint8_t* u = geometry.usedMask().ptr<std::uint8_t>(yy);
-        for (int xx = std::max(0, x - half); xx <= std::min(w - 1, x + half); ++xx) {
+    for (int yy = std::max(0, c.y - half); yy <= std::min(c.classes.rows - 1, c.y + half); ++yy) {
+        const std::uint8_t* cls = c.classes.ptr<std::uint8_t>(yy);
+        const std::uint8_t* u = c.geometry.usedMask().ptr<std::uint8_t>(yy);
+        for (int xx = std::max(0, c.x - half); xx <= std::min(c.classes.cols - 1, c.x + half); ++xx) {
             if (!u[xx]) continue;
             ++used;
-            green += c[xx] == std::uint8_t(ColorClass::Green);
-            black += c[xx] == std::uint8_t(ColorClass::Black);
+            green += cls[xx] == std::uint8_t(ColorClass::Green);
+            black += cls[xx] == std::uint8_t(ColorClass::Black);
         }
     }
     if (used > 0) {
         s.nonGreenPct = 100.0 * (used - green) / used;
         s.nonBlackPct = 100.0 * (used - black) / used;
     }
+}
 
-    const double band = std::max(options.radiusTolerance * radius, options.minRadiusBandPx);
-    const double rMin = std::max(0.5, radius - band);
-    const double rMax = radius + band;
-    const int rays = rayCount(radius);
+// What one ray of the circularity test found.
+struct BorderRay {
+    bool anyUsed = false;    // it crossed a processed pixel (else it says nothing of the shape)
+    bool hit = false;        // the ball's border lies in the search band
+    bool occluded = false;   // the border leads into a robot: the ray is not judged
+    double hitRadius = 0.0;  // px from the centre, when hit
+};
+
+// Walks one ray out from the centre (from the band's inner side when any edge in the band
+// counts) and looks for the ball's border between rMin and rMax.
+BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double rMax, const ValidationOptions& options)
+{
+    BorderRay ray;
+    auto edgeAt = [&](cv::Point p) {
+        if (!c.known(p)) return false;
+        ray.anyUsed = true;
+        return c.edgeAt(p);
+    };
+    cv::Point last(INT_MIN, INT_MIN);
+    const double rStart = options.firstEdgeOnly ? 0.5 : rMin;
+    bool blocked = false;  // an edge inside the band came first
+    for (double r = rStart; r <= rMax + 1e-9 && !ray.hit && !blocked; r += 0.5) {
+        const cv::Point p = c.along(r, ca, sa);
+        if (p == last) continue;
+        // A diagonal step could slip between the pixels of an 8-connected edge: look at the
+        // two pixels it cuts across too, so that the ray is 4-connected.
+        bool edge = false;
+        if (last.x != INT_MIN && p.x != last.x && p.y != last.y)
+            edge = edgeAt({p.x, last.y}) || edgeAt({last.x, p.y});
+        edge = edgeAt(p) || edge;
+        last = p;
+        if (!edge) continue;
+        // What lies just beyond the edge: carpet for a ball's border, a robot (black) when the
+        // ball is partly hidden behind one: such a ray says nothing of the shape.
+        const cv::Point b = c.along(r + options.beyondEdgePx, ca, sa);
+        const bool beyondKnown = c.known(b);
+        const ColorClass beyond = beyondKnown ? c.classAt(b) : ColorClass::Unknown;
+        if (options.ignoreOccludedRays && beyond == ColorClass::Black) {
+            ray.occluded = true;
+            return ray;
+        }
+        if (r < rMin - 1e-9) {
+            blocked = true;
+        } else if (options.borderIntoCarpet) {
+            ray.hit = !beyondKnown || beyond == ColorClass::Green;
+            blocked = !ray.hit;
+        } else {
+            ray.hit = true;
+        }
+        if (ray.hit) ray.hitRadius = r;
+    }
+    if (!ray.hit && !blocked && options.ignoreOccludedRays) {
+        // No border at all: the ball may run on into a robot standing against it.
+        const cv::Point e = c.along(rMax, ca, sa);
+        ray.occluded = c.known(e) && c.classAt(e) == ColorClass::Black;
+    }
+    return ray;
+}
+
+// Thesis' third test: the share of the usable rays that find the ball's border in the band
+// around the expected radius, and how much the border's radius spreads.
+void scoreCircularity(const Circle& c, const ValidationOptions& options, ValidationScores& s)
+{
+    const double band = std::max(options.radiusTolerance * c.radius, options.minRadiusBandPx);
+    const double rMin = std::max(0.5, c.radius - band);
+    const double rMax = c.radius + band;
+    const int rays = rayCount(c.radius);
     int usable = 0;
     int hits = 0;
     double hitSum = 0;
     double hitSq = 0;
-    auto edgeAt = [&](int px, int py, bool& anyUsed) {
-        if (px < 0 || py < 0 || px >= w || py >= h || !geometry.isUsed(px, py)) return false;
-        anyUsed = true;
-        return edges.ptr<std::uint8_t>(py)[px] != 0;
-    };
     for (int i = 0; i < rays; ++i) {
         const double a = 2.0 * M_PI * i / rays;
-        const double ca = std::cos(a);
-        const double sa = std::sin(a);
-        bool anyUsed = false;
-        bool hit = false;
-        int lastX = INT_MIN;
-        int lastY = INT_MIN;
-        // From the centre when only the first edge counts, else from the band's inner side.
-        const double rStart = options.firstEdgeOnly ? 0.5 : rMin;
-        bool blocked = false;   // an edge inside the band came first
-        bool occluded = false;  // the border leads into a robot: not judged
-        for (double r = rStart; r <= rMax + 1e-9 && !hit && !blocked; r += 0.5) {
-            const int px = int(std::lround(x + r * ca));
-            const int py = int(std::lround(y + r * sa));
-            if (px == lastX && py == lastY) continue;
-            // A diagonal step could slip between the pixels of an 8-connected edge: look at
-            // the two pixels it cuts across too, so that the ray is 4-connected.
-            bool edge = false;
-            if (lastX != INT_MIN && px != lastX && py != lastY)
-                edge = edgeAt(px, lastY, anyUsed) || edgeAt(lastX, py, anyUsed);
-            edge = edgeAt(px, py, anyUsed) || edge;
-            lastX = px;
-            lastY = py;
-            if (!edge) continue;
-            // What lies 1.5 px beyond the edge: carpet for a ball's border, a robot (black)
-            // when the ball is partly hidden behind one: such a ray says nothing of the shape.
-            const int bx = int(std::lround(x + (r + 1.5) * ca));
-            const int by = int(std::lround(y + (r + 1.5) * sa));
-            const bool beyondKnown = bx >= 0 && by >= 0 && bx < w && by < h && geometry.isUsed(bx, by);
-            const auto beyond = beyondKnown ? ColorClass(classes.ptr<std::uint8_t>(by)[bx]) : ColorClass::Unknown;
-            if (options.ignoreOccludedRays && beyond == ColorClass::Black) {
-                occluded = true;
-                break;
-            }
-            if (r < rMin - 1e-9)
-                blocked = true;
-            else if (options.borderIntoCarpet) {
-                hit = !beyondKnown || beyond == ColorClass::Green;
-                blocked = !hit;
-            } else {
-                hit = true;
-            }
-            if (hit) {
-                hitSum += r;
-                hitSq += r * r;
-            }
-        }
-        if (!hit && !blocked && !occluded && options.ignoreOccludedRays) {
-            // No border at all: the ball may run on into a robot standing against it.
-            const int ex = int(std::lround(x + rMax * ca));
-            const int ey = int(std::lround(y + rMax * sa));
-            occluded = ex >= 0 && ey >= 0 && ex < w && ey < h && geometry.isUsed(ex, ey) &&
-                       classes.ptr<std::uint8_t>(ey)[ex] == std::uint8_t(ColorClass::Black);
-        }
-        if (occluded) continue;
-        usable += anyUsed;
-        hits += hit;
+        const BorderRay ray = traceBorder(c, std::cos(a), std::sin(a), rMin, rMax, options);
+        if (ray.occluded) continue;
+        usable += ray.anyUsed;
+        if (!ray.hit) continue;
+        ++hits;
+        hitSum += ray.hitRadius;
+        hitSq += ray.hitRadius * ray.hitRadius;
     }
-    if (usable >= kMinUsableRayShare * rays) s.circularityPct = 100.0 * hits / usable;
+    if (usable > 0 && usable >= options.minUsableRayShare * rays) s.circularityPct = 100.0 * hits / usable;
     if (hits > 0) s.borderSpreadPx = std::sqrt(std::max(0.0, hitSq / hits - (hitSum / hits) * (hitSum / hits)));
+}
 
-    // Run-on test: rays along which the centre's colour class goes on without a break from the
-    // centre out beyond the circle. A line corner or line end continues as line; a ball on
-    // carpet (or beside a line) has carpet just outside it, and a ball never continues in its
-    // own colour. Rays meeting black (a robot) or unprocessed pixels are not judged.
-    const double runTo = kRunOnReach * radius;
+// Whether the centre's colour class goes on without a break along one ray out to `reach` px;
+// nothing when the ray meets black (a robot) or an unprocessed pixel: it is not judged.
+std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double reach)
+{
+    int first = -1;
+    for (double r = 0.0; r <= reach + 1e-9; r += 0.5) {
+        const cv::Point p = c.along(r, ca, sa);
+        if (!c.known(p)) return std::nullopt;
+        const ColorClass cls = c.classAt(p);
+        if (cls == ColorClass::Black) return std::nullopt;
+        if (cls == ColorClass::Green) return false;
+        if (first < 0)
+            first = int(cls);
+        else if (int(cls) != first)
+            return false;
+    }
+    return true;
+}
+
+// Our run-on test: the share of judged rays along which the centre's colour runs on beyond the
+// circle. A line corner or line end continues as line; a ball on carpet (or beside a line) has
+// carpet just outside it, and a ball never continues in its own colour.
+void scoreRunOn(const Circle& c, const ValidationOptions& options, ValidationScores& s)
+{
+    const int rays = rayCount(c.radius);
+    const double reach = options.runOnReach * c.radius;
     int judged = 0;
     int runOn = 0;
     for (int i = 0; i < rays; ++i) {
         const double a = 2.0 * M_PI * i / rays;
-        const double ca = std::cos(a);
-        const double sa = std::sin(a);
-        bool known = true;
-        bool runs = true;
-        int first = -1;
-        for (double r = 0.0; r <= runTo + 1e-9 && known && runs; r += 0.5) {
-            const int px = int(std::lround(x + r * ca));
-            const int py = int(std::lround(y + r * sa));
-            if (px < 0 || py < 0 || px >= w || py >= h || !geometry.isUsed(px, py)) {
-                known = false;
-                break;
-            }
-            const int cls = classes.ptr<std::uint8_t>(py)[px];
-            if (cls == int(ColorClass::Black))
-                known = false;
-            else if (cls == int(ColorClass::Green))
-                runs = false;
-            else if (first < 0)
-                first = cls;
-            else if (cls != first)
-                runs = false;
-        }
-        if (!known) continue;
+        const std::optional<bool> runs = runsOnAlong(c, std::cos(a), std::sin(a), reach);
+        if (!runs) continue;
         ++judged;
-        runOn += runs;
+        runOn += *runs;
     }
     if (judged > 0) s.runOnPct = 100.0 * runOn / judged;
+}
+
+// The first test a scored candidate fails, in the thesis' order and then ours.
+RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& options)
+{
+    if (c.expectedRadiusPx < options.minRadiusPx) return RejectReason::TooSmall;
+    if (c.scores.nonGreenPct < options.minNonGreenPct) return RejectReason::NonGreen;
+    if (c.scores.nonBlackPct < options.minNonBlackPct) return RejectReason::NonBlack;
+    if (c.scores.circularityPct < options.minCircularityPct) return RejectReason::Circularity;
+    if (c.scores.runOnPct > options.maxRunOnPct) return RejectReason::RunsOn;
+    return RejectReason::None;
+}
+
+}  // namespace
+
+ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,
+                             const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options)
+{
+    const Circle circle{x, y, radius, classes, edges, geometry};
+    ValidationScores s;
+    scoreSquare(circle, squareSide, s);
+    scoreCircularity(circle, options, s);
+    scoreRunOn(circle, options, s);
     return s;
 }
 
@@ -173,16 +217,7 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
     c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, ball.squareSizeAt(c.distancePx), classes, edges,
                            geometry, options);
     if (c.rejected != RejectReason::None) return;  // already out (outside the area, too large)
-    if (c.expectedRadiusPx < options.minRadiusPx)
-        c.rejected = RejectReason::TooSmall;
-    else if (c.scores.nonGreenPct < options.minNonGreenPct)
-        c.rejected = RejectReason::NonGreen;
-    else if (c.scores.nonBlackPct < options.minNonBlackPct)
-        c.rejected = RejectReason::NonBlack;
-    else if (c.scores.circularityPct < options.minCircularityPct)
-        c.rejected = RejectReason::Circularity;
-    else if (c.scores.runOnPct > options.maxRunOnPct)
-        c.rejected = RejectReason::RunsOn;
+    c.rejected = firstFailedTest(c, options);
 }
 
 }  // namespace omnitune

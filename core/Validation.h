@@ -37,13 +37,25 @@ struct ValidationOptions {
     // still rejected by the non-black test.
     bool ignoreOccludedRays = true;
     // %; a candidate is rejected when along more of its rays the colour class of its centre
-    // runs on without a break out beyond the circle (to 1.3 expected radii; rays meeting black
-    // or masked pixels are not judged). A ball on carpet, or beside a line, has carpet just
-    // outside its border; at a line corner or line end the line goes on. Measured on the
+    // runs on without a break out beyond the circle (to runOnReach expected radii; rays meeting
+    // black or masked pixels are not judged). A ball on carpet, or beside a line, has carpet
+    // just outside its border; at a line corner or line end the line goes on. Measured on the
     // simulated tours (docs/evaluation.md): balls 0 % (10 % at most for a white ball touching
     // a line), the far line corners that passed every other test 18.5 % and more. 100 turns
     // the test off.
     double maxRunOnPct = 15.0;
+    // Expected radii; how far out the centre's colour must run on for a ray to count in the
+    // run-on test: past the ball's blurred border (~1 px) but not as far as a nearby line (balls
+    // beside a line keep a strip of carpet). 1.5 and 1.75 left far line corners at 11 %, barely
+    // above a white ball touching a line (10 %); 1.3 puts them at 18.5 % and more.
+    double runOnReach = 1.3;
+    // Fraction of the circle's rays; rays whose whole search band lies on unprocessed pixels
+    // (robot body, rods) say nothing about the shape and are left out. With fewer usable rays
+    // than this share the circularity is not judged (0 %, so the candidate fails).
+    double minUsableRayShare = 0.25;
+    // px; how far beyond a ray's edge its colour is read for borderIntoCarpet and
+    // ignoreOccludedRays: past the edge's own blurred pixel, still next to the ball.
+    double beyondEdgePx = 1.5;
 };
 
 // Scores one candidate and sets its `rejected` field (first failing test: too small, then the

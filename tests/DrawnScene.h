@@ -44,30 +44,23 @@ inline cv::Point drawBall(cv::Mat& img, const Config& c, double distance, double
 
 }  // namespace omnitune::test
 
-#include "core/ColorLut.h"
-#include "core/Edges.h"
-#include "core/Geometry.h"
+#include "core/FrontEnd.h"
 
 namespace omnitune::test {
 
-// The stages before the Hough transform, run by hand on a drawn frame.
+// The stages before the Hough transform on a drawn frame: the product's own front end, so the
+// edge, Hough and validation tests run on what the pipeline runs.
 struct EdgeStages {
-    Geometry geometry;
+    FrontEnd frontEnd;
+    const Geometry& geometry;
     BallModel ball;
     cv::Mat classes;
     cv::Mat binary;
     cv::Mat edges;
 
-    EdgeStages(const Config& c, const cv::Mat& frame)
-        : geometry(c.geometry, c.mask), ball(c.ball)
+    EdgeStages(const Config& c, const cv::Mat& frame) : frontEnd(c), geometry(frontEnd.geometry()), ball(c.ball)
     {
-        const ColorLut lut(c.colors);
-        classes = cv::Mat(frame.size(), CV_8UC1, cv::Scalar(0));
-        lut.segment(frame, PixelFormat::Bgr8, geometry.spans(), classes);
-        makeBinary(classes, geometry, binary);
-        CannyDetector canny;
-        canny.detect(binary, c.edges, edges);
-        cv::bitwise_and(edges, geometry.edgeMask(), edges);
+        frontEnd.process(frame, PixelFormat::Bgr8, classes, binary, edges);
     }
 };
 

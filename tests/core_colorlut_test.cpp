@@ -1,6 +1,7 @@
 // Colour LUT: classes of typical colours, agreement with direct HSV classification, hue
 // wrap-around, and the UYVY path agreeing with the BGR path.
 #include "core/ColorLut.h"
+#include "core/ConfigSchema.h"
 #include "core/Geometry.h"
 
 #include <opencv2/imgproc.hpp>
@@ -202,7 +203,12 @@ private slots:
     {
         ColorLutOptions o;
         o.bits = 9;
-        QVERIFY_EXCEPTION_THROWN(ColorLut{o}, std::invalid_argument);
+        QVERIFY_EXCEPTION_THROWN(ColorLut{o}, cv::Exception);  // a programmer error: checkConfig reports it
+        Config c;
+        c.colors = o;
+        const auto issues = checkConfig(c);
+        QVERIFY(!issues.empty());
+        QCOMPARE(QString::fromStdString(issues.front().key), QString("colors.lut_bits"));
     }
 };
 

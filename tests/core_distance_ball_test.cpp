@@ -1,5 +1,6 @@
 // Distance map (px <-> m, ball-height correction) and the ball radius model.
 #include "core/BallModel.h"
+#include "core/ConfigSchema.h"
 #include "core/DistanceMap.h"
 
 #include <QtTest>
@@ -65,23 +66,39 @@ private slots:
         QVERIFY(std::abs(map.ballPixels(map.ballDistance(px)) - px) < 1e-4);
     }
 
+    // Bad points are a user error reported once, by checkConfig() with the key; the map's
+    // constructor only asserts what its tables need.
     void rejectsBadPoints_data()
     {
         QTest::addColumn<QVector<double>>("px");
         QTest::addColumn<QVector<double>>("m");
-        QTest::newRow("one point") << QVector<double>{0} << QVector<double>{0};
-        QTest::newRow("sizes differ") << QVector<double>{0, 10, 20} << QVector<double>{0, 1};
-        QTest::newRow("pixels not increasing") << QVector<double>{0, 10, 10} << QVector<double>{0, 1, 2};
-        QTest::newRow("metres decreasing") << QVector<double>{0, 10, 20} << QVector<double>{0, 2, 1};
+        QTest::addColumn<QString>("key");
+        QTest::newRow("one point") << QVector<double>{0} << QVector<double>{0} << "distance_map.ground_distances";
+        QTest::newRow("sizes differ") << QVector<double>{0, 10, 20} << QVector<double>{0, 1}
+                                      << "distance_map.ground_distances";
+        QTest::newRow("pixels not increasing") << QVector<double>{0, 10, 10} << QVector<double>{0, 1, 2}
+                                               << "distance_map.pixel_radii";
+        QTest::newRow("metres decreasing") << QVector<double>{0, 10, 20} << QVector<double>{0, 2, 1}
+                                           << "distance_map.ground_distances";
     }
     void rejectsBadPoints()
     {
         QFETCH(QVector<double>, px);
         QFETCH(QVector<double>, m);
+        QFETCH(QString, key);
+        Config c;
+        c.distanceMap.pixelRadii.assign(px.begin(), px.end());
+        c.distanceMap.groundDistances.assign(m.begin(), m.end());
+        const auto issues = checkConfig(c);
+        QVERIFY(std::any_of(issues.begin(), issues.end(),
+                            [&](const ConfigIssue& i) { return QString::fromStdString(i.key) == key; }));
+    }
+    void tooFewPointsAreAProgrammerError()
+    {
         DistanceMapOptions o;
-        o.pixelRadii.assign(px.begin(), px.end());
-        o.groundDistances.assign(m.begin(), m.end());
-        QVERIFY_EXCEPTION_THROWN(DistanceMap{o}, std::invalid_argument);
+        o.pixelRadii = {0};
+        o.groundDistances = {0};
+        QVERIFY_EXCEPTION_THROWN(DistanceMap{o}, cv::Exception);
     }
 
     void radiusIsThePolynomialClamped()

@@ -74,6 +74,69 @@ private slots:
                 if (s.edges.at<uchar>(y, x)) QVERIFY(std::abs(std::hypot(x - ball.x, y - ball.y) - std::lround(r)) <= 1.5);
     }
 
+    // What the tooltips of edges.canny_low/high say: on the binary image (levels 0 and 255) every
+    // L1 Sobel gradient is a multiple of 510. Thresholds below 510 all give the same edges; up
+    // to 1019 only the ring around a one-pixel speck drops out; from 1020 real borders break
+    // (a low threshold); a high threshold from 1530 starts no edge at all.
+    void cannyThresholdsBarelyMatterOnTheBinaryImage_data()
+    {
+        QTest::addColumn<int>("low");
+        QTest::addColumn<int>("high");
+        QTest::addColumn<QString>("change");
+        QTest::newRow("0 / 0") << 0 << 0 << "none";
+        QTest::newRow("10 / 500") << 10 << 500 << "none";
+        QTest::newRow("509 / 509") << 509 << 509 << "none";
+        QTest::newRow("60 / 510") << 60 << 510 << "speck";
+        QTest::newRow("510 / 1019") << 510 << 1019 << "speck";
+        QTest::newRow("1020 / 1020") << 1020 << 1020 << "borders";
+        QTest::newRow("60 / 1530") << 60 << 1530 << "all";
+    }
+    void cannyThresholdsBarelyMatterOnTheBinaryImage()
+    {
+        QFETCH(int, low);
+        QFETCH(int, high);
+        QFETCH(QString, change);
+        Config c;
+        cv::Mat frame = greenField(c);
+        for (int i = 0; i < 6; ++i) drawBall(frame, c, 80 + 25 * i, 60 * i + 10);
+        cv::line(frame, pointAt(c, 90, 200), pointAt(c, 220, 235), kWhite, 3);
+        const cv::Point2d speck = pointAt(c, 150, 300);  // one non-green pixel (sensor noise)
+        frame.at<cv::Vec3b>(int(speck.y), int(speck.x)) = cv::Vec3b(235, 235, 235);
+        const EdgeStages thesis(c, frame);  // the thesis' 60 / 180
+        QVERIFY(cv::countNonZero(thesis.edges) > 200);
+        c.edges = EdgeOptions{low, high};
+        const EdgeStages other(c, frame);
+        cv::Mat changed = other.edges != thesis.edges;
+        const int all = cv::countNonZero(changed);
+        const cv::Rect aroundSpeck(int(speck.x) - 1, int(speck.y) - 1, 3, 3);
+        const int atSpeck = cv::countNonZero(changed(aroundSpeck));
+        if (change == "none") QCOMPARE(all, 0);
+        if (change == "speck") QVERIFY2(atSpeck > 0 && all == atSpeck, qPrintable(QString("%1 %2").arg(all).arg(atSpeck)));
+        if (change == "borders") QVERIFY2(all - atSpeck > 100, qPrintable(QString::number(all)));
+        if (change == "all") QCOMPARE(cv::countNonZero(other.edges), 0);
+    }
+
+    // The same holds for the Canny inside cv::HoughCircles (opencv_hough.canny_high's tooltip).
+    void houghCirclesCannyBarelyMattersOnTheBinaryImage()
+    {
+        const Config c;
+        cv::Mat frame = greenField(c);
+        for (int i = 0; i < 6; ++i) drawBall(frame, c, 80 + 25 * i, 60 * i + 10);
+        const EdgeStages s(c, frame);
+        const OpenCvHoughOptions o;
+        auto circles = [&](double cannyHigh) {
+            std::vector<cv::Vec3f> out;
+            cv::HoughCircles(s.binary, out, cv::HOUGH_GRADIENT, o.dp, o.minDist, cannyHigh, o.accThreshold,
+                             o.minRadius, o.maxRadius);
+            return out;
+        };
+        const std::vector<cv::Vec3f> reference = circles(o.cannyHigh);
+        QVERIFY(!reference.empty());
+        QVERIFY(circles(509) == reference);
+        QVERIFY(circles(1) == reference);
+        QVERIFY(circles(1530).empty());  // no edge starts: the threshold does matter up there
+    }
+
     void noEdgesAtTheMaskBorder()
     {
         const Config c;  // uniform carpet: the robot body and mirror rim must not make edges

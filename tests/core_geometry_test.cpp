@@ -1,4 +1,5 @@
 // Geometry (used pixels, mask, distances) and radial sensors.
+#include "core/ConfigSchema.h"
 #include "core/Geometry.h"
 #include "core/RadialSensors.h"
 
@@ -62,16 +63,25 @@ private slots:
         QVERIFY(geo.isUsed(25, 40));  // the mirror-image spot is kept
     }
 
+    // A mask of the wrong size is a user error reported once, by checkConfig() with the sizes;
+    // Geometry only asserts it (a caller that skipped checkConfig).
     void wrongMaskSizeIsAnError()
     {
-        const cv::Mat mask(80, 100, CV_8UC1, cv::Scalar(255));
-        try {
-            Geometry geo(smallRing(), mask);
-            QFAIL("no exception");
-        } catch (const std::invalid_argument& e) {
-            QVERIFY2(QString(e.what()).contains("100x80"), e.what());
-            QVERIFY2(QString(e.what()).contains("101x81"), e.what());
-        }
+        Config c;
+        c.geometry = smallRing();
+        c.mask = cv::Mat(80, 100, CV_8UC1, cv::Scalar(255));
+        const auto issues = checkConfig(c);
+        QCOMPARE(int(issues.size()), 1);
+        QCOMPARE(QString::fromStdString(issues[0].key), QString("geometry.mask_file"));
+        const QString message = QString::fromStdString(issues[0].message);
+        QVERIFY2(message.contains("100x80") && message.contains("101x81"), qPrintable(message));
+        QVERIFY_EXCEPTION_THROWN(Geometry(c.geometry, c.mask), cv::Exception);
+
+        c.mask = cv::Mat(81, 101, CV_8UC3, cv::Scalar::all(255));
+        const auto colour = checkConfig(c);
+        QCOMPARE(int(colour.size()), 1);
+        QVERIFY2(QString::fromStdString(colour[0].message).contains("one 8-bit channel"),
+                 colour[0].message.c_str());
     }
 
     void oddFrameSizes_data()

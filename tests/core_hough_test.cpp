@@ -1,5 +1,6 @@
 // The specific circular Hough transform (thesis 4.1) and the cv::HoughCircles path (4.2).
 #include "DrawnScene.h"
+#include "core/ConfigSchema.h"
 #include "core/OpenCvHough.h"
 #include "core/SpecificHough.h"
 
@@ -143,13 +144,19 @@ private slots:
         QCOMPARE(cands[0].rejected, RejectReason::RadiusTooLarge);
     }
 
+    // Bad bounds are a user error reported once, by checkConfig() with the key; the stage only
+    // asserts what its one-byte area index needs.
     void rejectsBadAreaBounds()
     {
         Config c;
         c.hough.areaBounds = {70, 60, 140};
+        const auto issues = checkConfig(c);
+        QVERIFY(!issues.empty());
+        QCOMPARE(QString::fromStdString(issues.front().key), QString("hough.area_bounds"));
+        c.hough.areaBounds.clear();
         const Geometry g(c.geometry, cv::Mat());
         const BallModel b(c.ball);
-        QVERIFY_EXCEPTION_THROWN(SpecificHough(c.hough, g, b), std::invalid_argument);
+        QVERIFY_EXCEPTION_THROWN(SpecificHough(c.hough, g, b), cv::Exception);
     }
 };
 

@@ -200,6 +200,24 @@ private slots:
         QCOMPARE(s.hough.type(), CV_8UC3);
     }
 
+    // The core tests' EdgeStages is the pipeline's own front end: the same classes, binary
+    // image and edges, so edge, Hough and validation tests run on the product path.
+    void testsRunThePipelinesFrontEnd()
+    {
+        const Config c;
+        cv::Mat frame = greenField(c);
+        drawBall(frame, c, 150, 0);
+        cv::line(frame, pointAt(c, 90, 200), pointAt(c, 220, 200), kWhite, 3);
+        Pipeline pipeline(c);
+        PipelineResult r;
+        pipeline.process(frame, PixelFormat::Bgr8, r, true);
+        const EdgeStages s(c, frame);
+        QCOMPARE(cv::countNonZero(r.classes != s.classes), 0);
+        QCOMPARE(cv::countNonZero(r.stages.grayscale != s.binary), 0);
+        QCOMPARE(cv::countNonZero(r.stages.edges != s.edges), 0);
+        QVERIFY(cv::countNonZero(s.edges) > 20);
+    }
+
     void noAllocationOnceWarm()
     {
         Config c;

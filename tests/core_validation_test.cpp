@@ -33,6 +33,14 @@ BallCandidate candidateAt(const EdgeStages& s, cv::Point p)
     return cand;
 }
 
+// The scores of a circle of the expected radius centred on `p`.
+ValidationScores scoresAt(const EdgeStages& s, cv::Point p, const ValidationOptions& options)
+{
+    const BallCandidate c = candidateAt(s, p);
+    return scoreCircle(c.x, c.y, c.expectedRadiusPx, s.ball.squareSizeAt(c.distancePx), s.classes, s.edges,
+                       s.geometry, options);
+}
+
 // A candidate at distance/angle validated against a frame built by `draw`.
 template <class Draw>
 BallCandidate validateAt(double distance, double angle, Draw draw)
@@ -178,6 +186,58 @@ private slots:
         QVERIFY2(c.rejected == RejectReason::None,
                  qPrintable(verdict(c)));
         QCOMPARE(c.scores.runOnPct, 0.0);
+    }
+
+    // The tuned constants of the circle tests are config keys, and each one is used.
+    void runOnReachIsTheConfigs()
+    {
+        // A white disc alone: at the default reach every ray leaves it onto carpet; at a reach
+        // of one radius many rays end inside the disc, so its colour "runs on" along them.
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 150, 0, kWhite);
+        const EdgeStages s(c, frame);
+        auto score = [&](const ValidationOptions& o) { return scoresAt(s, p, o); };
+        QCOMPARE(score(c.validation).runOnPct, 0.0);
+        ValidationOptions shortReach = c.validation;
+        shortReach.runOnReach = 1.0;
+        QVERIFY2(score(shortReach).runOnPct > c.validation.maxRunOnPct,
+                 qPrintable(QString::number(score(shortReach).runOnPct)));
+    }
+
+    void minUsableRayShareIsTheConfigs()
+    {
+        // Half the ball behind the mask (a robot part): the rays left are judged by default, not
+        // when every ray must be usable.
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 150, 0);
+        const int r = int(std::lround(expectedRadius(c, 150)));
+        c.mask = cv::Mat(frame.size(), CV_8UC1, cv::Scalar(255));
+        cv::rectangle(c.mask, cv::Rect(p.x - 3 * r, p.y - 3 * r, 3 * r + r / 2, 6 * r), cv::Scalar(0), cv::FILLED);
+        const EdgeStages s(c, frame);
+        auto score = [&](const ValidationOptions& o) { return scoresAt(s, p, o); };
+        QVERIFY2(score(c.validation).circularityPct > 30, qPrintable(QString::number(score(c.validation).circularityPct)));
+        ValidationOptions allRays = c.validation;
+        allRays.minUsableRayShare = 1.0;
+        QCOMPARE(score(allRays).circularityPct, 0.0);
+    }
+
+    void beyondEdgePxIsTheConfigs()
+    {
+        // A ball inside a white ring with a thin strip of carpet between them: just beyond its
+        // border lies carpet (a ball), a few pixels farther the ring (no carpet: not a border).
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 120, 0);
+        const int r = int(std::lround(expectedRadius(c, 120)));
+        cv::circle(frame, p, r + 5, kWhite, 3);
+        const EdgeStages s(c, frame);
+        auto score = [&](const ValidationOptions& o) { return scoresAt(s, p, o); };
+        QVERIFY2(score(c.validation).circularityPct > 70, qPrintable(QString::number(score(c.validation).circularityPct)));
+        ValidationOptions farther = c.validation;
+        farther.beyondEdgePx = 5.0;
+        QVERIFY2(score(farther).circularityPct < 30, qPrintable(QString::number(score(farther).circularityPct)));
     }
 
     void thresholdsAreTheConfigs()

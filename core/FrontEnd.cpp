@@ -1,0 +1,37 @@
+#include "core/FrontEnd.h"
+
+#include "core/FillBytes.h"
+#include "core/Stopwatch.h"
+
+#include <opencv2/core.hpp>
+
+
+namespace omnitune {
+
+FrontEnd::FrontEnd(const Config& config)
+    : lut_(config.colors), geometry_(config.geometry, config.mask), edgeOptions_(config.edges)
+{
+}
+
+void FrontEnd::process(const cv::Mat& frame, PixelFormat format, cv::Mat& classes, cv::Mat& binary, cv::Mat& edges,
+                       StageTimings* timings)
+{
+    CV_Assert(frame.size() == geometry_.imageSize());
+    Stopwatch clock;
+    classes.create(geometry_.imageSize(), CV_8UC1);
+    fillBytes(classes, 0);
+    lut_.segment(frame, format, geometry_.spans(), classes);
+    const double segmentMs = clock.lap();
+    makeBinary(classes, geometry_, binary);
+    const double binaryMs = clock.lap();
+    canny_.detect(binary, edgeOptions_, edges);
+    cv::bitwise_and(edges, geometry_.edgeMask(), edges);
+    const double edgesMs = clock.lap();
+    if (timings) {
+        timings->segmentMs = segmentMs;
+        timings->binaryMs = binaryMs;
+        timings->edgesMs = edgesMs;
+    }
+}
+
+}  // namespace omnitune

@@ -1,0 +1,40 @@
+#pragma once
+// The detector's front end (thesis ch. 4, Fig. 4.6): camera frame -> colour classes -> binary
+// image (green and unprocessed pixels white) -> Canny edges inside the processed ring. The
+// pipeline, the core tests and the bench all run this one path, so what they test and time is
+// what the robot runs.
+#include "core/ColorLut.h"
+#include "core/Config.h"
+#include "core/Edges.h"
+#include "core/Geometry.h"
+#include "core/PipelineResult.h"
+#include "core/PixelFormat.h"
+
+#include <opencv2/core.hpp>
+
+namespace omnitune {
+
+class FrontEnd {
+public:
+    // Compiles the colour table and the geometry (ring, mask, edge mask) of `config`.
+    explicit FrontEnd(const Config& config);
+
+    const Geometry& geometry() const { return geometry_; }
+    const ColorLut& lut() const { return lut_; }
+
+    // `frame` must have the geometry's size and the format's type (Pipeline reports a frame
+    // that does not as an error before calling this). Fills `classes` (class ids, Unknown
+    // outside the ring), `binary` and `edges`; the outputs and the Canny scratch buffers are
+    // reused, so a warm front end allocates nothing. `timings`, when given, gets the segment,
+    // binary and edge stage times.
+    void process(const cv::Mat& frame, PixelFormat format, cv::Mat& classes, cv::Mat& binary, cv::Mat& edges,
+                 StageTimings* timings = nullptr);
+
+private:
+    ColorLut lut_;
+    Geometry geometry_;
+    EdgeOptions edgeOptions_;
+    CannyDetector canny_;
+};
+
+}  // namespace omnitune
