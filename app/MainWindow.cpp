@@ -9,6 +9,8 @@
 #include "widgets/PipelineView.h"
 #include "widgets/PixelInspector.h"
 #include "widgets/RecentFiles.h"
+#include "widgets/RecoveryFile.h"
+#include "widgets/RecoveryOffer.h"
 #include "calib/session/Session.h"
 #include "calib/source/SessionSource.h"
 #include "widgets/SessionSweepDialog.h"
@@ -110,6 +112,8 @@ MainWindow::MainWindow(QWidget* parent)
         nav_->setMarks(marks, {FrameMarkKind::Truth});
     });
     connect(panel_, &ThresholdPanel::editRefused, this, [this](const QString& why) { statusBar()->showMessage(why, 8000); });
+    recovery_ = new RecoveryFile(&doc_, this);
+    connect(recovery_, &RecoveryFile::writeFailed, this, [this](const QString& why) { notices_->add(tr("Crash recovery:"), {why}); });
 
     setAcceptDrops(true);  // a session folder, video, image or config.yml dropped on the window opens
     buildMenus();
@@ -219,6 +223,7 @@ bool MainWindow::openSource(const QString& path)
     const auto* session = dynamic_cast<const SessionSource*>(opened.source.get());
     if (session && session->reader().hasConfig() && maybeSave())
         openConfig(QString::fromStdString(session->reader().configPath()));
+    if (doc_.path().isEmpty()) offerRecoveredEdits();  // edits of the defaults, kept as "untitled"
     const QString sessionFolder = session ? QString::fromStdString(session->reader().folder()) : QString();
     source_ = std::move(opened.source);
     ++sourceTag_;
@@ -258,7 +263,13 @@ bool MainWindow::openConfig(const QString& path)
     }
     notices_->add(tr("Config %1 loaded with warnings (omnitune-config --upgrade FILE writes the missing keys):").arg(path),
                   warnings);
+    offerRecoveredEdits();
     return true;
+}
+
+void MainWindow::offerRecoveredEdits()
+{
+    notices_->add(tr("Crash recovery:"), offerRecovery(this, *recovery_, doc_));
 }
 
 bool MainWindow::openPath(const QString& path)
@@ -393,9 +404,10 @@ bool MainWindow::maybeKeepTruth()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (maybeKeepTruth() && maybeSave())
+    if (maybeKeepTruth() && maybeSave()) {
+        recovery_->discard();  // saved, or dropped on purpose
         event->accept();
-    else
+    } else
         event->ignore();
 }
 

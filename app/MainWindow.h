@@ -24,6 +24,7 @@ class SessionSweepDialog;
 struct SweepResult;
 class ThresholdPanel;
 class RecentFiles;
+class RecoveryFile;
 class TruthMarker;
 
 class MainWindow : public QMainWindow {
@@ -46,6 +47,7 @@ public:
     FrameNavigator* navigator() const { return nav_; }
     NoticeBar* notices() const { return notices_; }
     ThresholdPanel* thresholdPanel() const { return panel_; }
+    RecoveryFile* recovery() const { return recovery_; }
     CandidateTableModel* candidates() const { return candidates_; }
     std::shared_ptr<const PipelineRun> lastRun() const { return lastRun_; }
     bool isProcessing() const;
@@ -77,6 +79,7 @@ private:
     void chooseConfig();
     void openTruth(const QString& sessionFolder);
     void chooseSourceFile();
+    void offerRecoveredEdits();  // edits an earlier run left unsaved for the current config
 
     ConfigDocument doc_;
     TruthDocument truth_;
@@ -88,6 +91,7 @@ private:
     TruthMarker* marker_;
     RecentFiles* recent_ = nullptr;
     NoticeBar* notices_ = nullptr;
+    RecoveryFile* recovery_ = nullptr;  // keeps unsaved config edits through a crash
     QLabel* resultLabel_;
     QLabel* truthLabel_;
     QLabel* timingLabel_;
