@@ -126,6 +126,8 @@ MainWindow::~MainWindow()
 {
     // The documents outlive the widgets and labels declared after them; a dirty undo stack
     // still signals "clean" while it is destroyed. Nothing may reach the half-destroyed window.
+    delete recovery_;  // listens to the undo stack, which signals while it is destroyed
+    recovery_ = nullptr;
     doc_.disconnect();
     truth_.disconnect();
     delete sweepDialog_;  // stops its thread before the members it reports to go

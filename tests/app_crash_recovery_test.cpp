@@ -156,6 +156,38 @@ private slots:
         QVERIFY(!QFile::exists(file));
     }
 
+    // A slider dragged for minutes restarts the short delay on every step; the file is still
+    // written once the first unwritten edit is RecoveryFile::kMaxAgeMs old.
+    void keptWhileEditsKeepComing()
+    {
+        MainWindow window;
+        QVERIFY(window.openSource(session_));
+        window.recovery()->setIntervals(3600 * 1000, 20);
+        QVERIFY(!window.document()->setValue("edges.canny_high", 201));
+        QTRY_VERIFY(QFile::exists(RecoveryFile::fileFor(config_)));
+        window.document()->undoStack()->setClean();
+    }
+
+    // The recovery folder cannot be written: the window says so and keeps the edits in memory.
+    void writeFailureIsReported()
+    {
+        const QByteArray dir = qgetenv("OMNITUNE_RECOVERY_DIR");
+        const QString blocker = tmp_.filePath("not-a-folder");
+        QFile f(blocker);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.close();
+        qputenv("OMNITUNE_RECOVERY_DIR", blocker.toUtf8());
+        MainWindow window;
+        QVERIFY(window.openSource(session_));
+        QVERIFY(!window.document()->setValue("edges.canny_high", 202));
+        const auto error = window.recovery()->writeNow();
+        qputenv("OMNITUNE_RECOVERY_DIR", dir);
+        QVERIFY(error);
+        QVERIFY2(window.notices()->text().contains("cannot be kept for crash recovery"), qPrintable(window.notices()->text()));
+        QCOMPARE(std::get<int>(window.document()->value("edges.canny_high")), 202);
+        window.document()->undoStack()->setClean();
+    }
+
     void discardRemovesTheFileAndNotNowKeepsIt()
     {
         Config edited = loadConfig(config_.toStdString()).config;
@@ -177,6 +209,33 @@ private slots:
         QCOMPARE(discard.texts.size(), 1);
         QCOMPARE(std::get<int>(window.document()->value("edges.canny_high")), 180);
         QVERIFY(!window.document()->isDirty());
+        QVERIFY(!QFile::exists(file));
+    }
+
+    // Edits of the defaults (a source without config.yml) are kept as "untitled" and offered
+    // when the next source without a config opens.
+    void editsOfAConfigWithoutFileAreKeptToo()
+    {
+        const QString frames = session_ + "/frames";  // an image folder: no config of its own
+        const QString file = RecoveryFile::fileFor(QString());
+        {
+            MainWindow window;
+            QVERIFY(window.openSource(frames));
+            QVERIFY(window.document()->path().isEmpty());
+            QVERIFY(!window.document()->setValue("edges.canny_high", 190));
+            QVERIFY(!window.recovery()->writeNow());
+            QCOMPARE(window.recovery()->writtenFile(), file);
+            QVERIFY(QFile::exists(file));
+        }  // destroyed without closing, as in a crash: the file stays
+        QVERIFY(QFile::exists(file));
+        MainWindow window;
+        BoxAnswerer restore(QMessageBox::Yes);
+        QVERIFY(window.openSource(frames));
+        QCOMPARE(restore.texts.size(), 1);
+        QVERIFY(restore.texts.front().contains("the default config"));
+        QCOMPARE(std::get<int>(window.document()->value("edges.canny_high")), 190);
+        QVERIFY(window.document()->isDirty());
+        window.document()->undoStack()->setClean();
         QVERIFY(!QFile::exists(file));
     }
 

@@ -32,11 +32,13 @@ QStringList offerRecovery(QWidget* parent, RecoveryFile& recovery, const ConfigD
         }
         lines << QString::fromStdString(c.toString());
     }
-    const QString config = doc.path().isEmpty() ? QObject::tr("the default config") : QFileInfo(doc.path()).fileName();
+    const QFileInfo file(doc.path());
+    const QString config = doc.path().isEmpty() ? QObject::tr("the default config") : file.fileName();
+    const QString where = doc.path().isEmpty() ? QString() : QObject::tr(" in %1").arg(file.absolutePath());
     QMessageBox box(QMessageBox::Question, QObject::tr("Recover unsaved edits"),
-                    QObject::tr("OmniTune ended without saving %1 edit(s) of %2 (last kept %3). Restore them?")
+                    QObject::tr("OmniTune ended without saving %1 edit(s) of %2%3 (last kept %4). Restore them?")
                         .arg(edits->changes.size())
-                        .arg(config, QLocale().toString(edits->written, QLocale::ShortFormat)),
+                        .arg(config, where, QLocale().toString(edits->written, QLocale::ShortFormat)),
                     QMessageBox::Yes | QMessageBox::Discard | QMessageBox::Cancel, parent);
     box.setInformativeText(QObject::tr("Saved \u2192 recovered:\n") + lines.join('\n'));
     box.button(QMessageBox::Yes)->setText(QObject::tr("Restore"));
