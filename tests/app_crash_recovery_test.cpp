@@ -2,7 +2,8 @@
 // copy of the demo session: a window killed with SIGKILL after an edit leaves a recovery file,
 // and the next window that opens the session offers it, listing "key: saved → recovered";
 // Restore applies it as one undo step and leaves the document unsaved. Saving removes the file,
-// Discard removes it, Not now keeps it, an unreadable one is reported and kept.
+// Discard removes it, Not now keeps it, an unreadable one is reported and kept, and a second
+// window on the same config leaves the first one's live file alone.
 #include "app/MainWindow.h"
 #include "core/ConfigParser.h"
 #include "core/ConfigWriter.h"
@@ -153,6 +154,30 @@ private slots:
         QVERIFY(kept.ok());
         QCOMPARE(kept.config.edges.cannyHigh, 222);
         QVERIFY(window.saveConfig());
+        QVERIFY(!QFile::exists(file));
+    }
+
+    // Two windows on one config: the second must not take the first one's live edits for a
+    // crash's (the recovery file's lock names a running process).
+    void liveEditsOfAnotherWindowAreNotOffered()
+    {
+        MainWindow first;
+        QVERIFY(first.openSource(session_));
+        QVERIFY(!first.document()->setValue("edges.canny_high", 203));
+        QVERIFY(!first.recovery()->writeNow());
+        const QString file = RecoveryFile::fileFor(config_);
+        QVERIFY(QFile::exists(file));
+
+        MainWindow second;
+        BoxAnswerer none(QMessageBox::Discard);
+        QVERIFY(second.openSource(session_));
+        QVERIFY(none.texts.isEmpty());
+        QVERIFY(QFile::exists(file));
+        QVERIFY(!second.document()->setValue("edges.canny_high", 204));
+        QVERIFY(second.recovery()->writeNow());  // refused: the file is the first window's
+        QVERIFY(second.notices()->text().contains("another OmniTune window"));
+        second.document()->undoStack()->setClean();
+        first.document()->undoStack()->setClean();
         QVERIFY(!QFile::exists(file));
     }
 

@@ -8,6 +8,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QLockFile>
 #include <QSaveFile>
 #include <QStandardPaths>
 #include <QUndoStack>
@@ -28,6 +29,24 @@ RecoveryFile::RecoveryFile(ConfigDocument* doc, QObject* parent) : QObject(paren
     connect(doc_, &ConfigDocument::dirtyChanged, this, [this](bool dirty) {
         if (!dirty) discard();  // saved, reverted, undone to the saved state or another config loaded
     });
+}
+
+RecoveryFile::~RecoveryFile() = default;
+
+bool RecoveryFile::lockedByOther(const QString& file)
+{
+    if (lock_ && locked_ == file) return false;
+    lock_.reset();
+    locked_.clear();
+    auto lock = std::make_unique<QLockFile>(file + ".lock");
+    lock->setStaleLockTime(0);  // stale only when its process is gone, however old
+    if (lock->tryLock(0)) {
+        lock_ = std::move(lock);
+        locked_ = file;
+        return false;
+    }
+    // Any other fault (an unwritable folder) shows when the file itself is written.
+    return lock->error() == QLockFile::LockFailedError;
 }
 
 QString RecoveryFile::directory()
@@ -66,14 +85,20 @@ std::optional<QString> RecoveryFile::writeNow()
     maxAge_.stop();
     if (!doc_->isDirty()) return std::nullopt;
     const QString file = fileFor(doc_->path());
-    if (!written_.isEmpty() && written_ != file) QFile::remove(written_);  // the config was saved elsewhere
+    if (!written_.isEmpty() && written_ != file) discard();  // the config was saved elsewhere
+    QDir().mkpath(directory());
+    if (lockedByOther(file)) {
+        const QString why = tr("Unsaved edits cannot be kept for crash recovery in %1: another OmniTune window "
+                               "keeps its own edits of this config there").arg(file);
+        emit writeFailed(why);
+        return why;
+    }
     std::string text = serializeConfig(doc_->config());
     // After the "%YAML" and "---" lines: says what the file is to whoever finds it.
     const std::size_t body = text.find('\n', text.find("---"));
     const QString what = doc_->path().isEmpty() ? QStringLiteral("a config with no file yet") : doc_->path();
     text.insert(body == std::string::npos ? 0 : body + 1,
                 "# OmniTune crash recovery: unsaved edits of " + what.toStdString() + "\n");
-    QDir().mkpath(directory());
     QSaveFile out(file);  // temporary file + rename: a kill while writing leaves the last good copy
     if (!out.open(QIODevice::WriteOnly) || out.write(text.data(), qint64(text.size())) != qint64(text.size()) ||
         !out.commit()) {
@@ -91,6 +116,8 @@ void RecoveryFile::discard()
     maxAge_.stop();
     if (!written_.isEmpty()) QFile::remove(written_);
     written_.clear();
+    lock_.reset();  // unlocks and removes the lock file
+    locked_.clear();
 }
 
 std::optional<RecoveredEdits> RecoveryFile::pending(const QString& configPath, const Config& saved)
@@ -98,6 +125,10 @@ std::optional<RecoveredEdits> RecoveryFile::pending(const QString& configPath, c
     RecoveredEdits edits;
     edits.file = fileFor(configPath);
     if (edits.file == written_ || !QFileInfo::exists(edits.file)) return std::nullopt;
+    QLockFile probe(edits.file + ".lock");
+    probe.setStaleLockTime(0);
+    if (!probe.tryLock(0)) return std::nullopt;  // a running window's live edits, not a crash's
+    probe.unlock();
     edits.written = QFileInfo(edits.file).lastModified();
     QFile in(edits.file);
     if (!in.open(QIODevice::ReadOnly)) {
@@ -142,8 +173,8 @@ QStringList RecoveryFile::restore(const RecoveredEdits& edits)
     doc_->undoStack()->endMacro();
     if (left.size() == edits.changes.size() && doc_->undoStack()->count() > before)
         doc_->undoStack()->undo();  // nothing went in: no empty step that would mark the document unsaved
-    if (!written_.isEmpty() && written_ != edits.file) QFile::remove(written_);
-    written_ = edits.file;  // this run's now: rewritten on the next edit, removed on save
+    if (!written_.isEmpty() && written_ != edits.file) discard();
+    if (!lockedByOther(edits.file)) written_ = edits.file;  // this run's now: rewritten on the next edit, removed on save
     return refused;
 }
 

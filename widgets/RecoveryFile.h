@@ -13,8 +13,11 @@
 #include <QString>
 #include <QTimer>
 
+#include <memory>
 #include <optional>
 #include <vector>
+
+class QLockFile;
 
 namespace omnitune {
 
@@ -35,6 +38,7 @@ public:
     static constexpr int kMaxAgeMs = 60000;   // ...and at least this often while edits keep coming
 
     explicit RecoveryFile(ConfigDocument* doc, QObject* parent = nullptr);
+    ~RecoveryFile() override;
 
     // $OMNITUNE_RECOVERY_DIR when set (tests), else "recovery" in the user's application data
     // folder (~/.local/share/OmniTune/recovery on Linux).
@@ -48,7 +52,8 @@ public:
 
     // A recovery file for `configPath` left by a run that ended with unsaved edits, compared with
     // `saved` (the config as loaded from that path). Nothing when there is none, when this run
-    // wrote it, or when it holds no difference (then it is removed).
+    // wrote it, when another running window owns it (its lock), or when it holds no difference
+    // (then it is removed).
     std::optional<RecoveredEdits> pending(const QString& configPath, const Config& saved);
     // Applies the recovered values as one undo step (Ctrl+Z takes it back) and takes the file
     // over as this run's. Returns the changes the document refused, with the reason.
@@ -67,11 +72,16 @@ signals:
 
 private:
     void onEdited();
+    bool lockedByOther(const QString& file);  // locks `file` for this run unless a live window has it
 
     ConfigDocument* doc_;
     QTimer debounce_;
     QTimer maxAge_;  // runs from the first edit not yet written
     QString written_;  // the recovery file this run owns (wrote or took over); empty: none
+    // "<file>.lock" while this run owns a recovery file, so that a second window on the same
+    // config does not offer live edits as a crash's; a killed run's lock is stale (dead PID).
+    std::unique_ptr<QLockFile> lock_;
+    QString locked_;  // the recovery file lock_ is for
 };
 
 }  // namespace omnitune
