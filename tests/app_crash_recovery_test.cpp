@@ -205,11 +205,15 @@ private slots:
         MainWindow window;
         QVERIFY(window.openSource(session_));
         QVERIFY(!window.document()->setValue("edges.canny_high", 202));
+        QSignalSpy failures(window.recovery(), &RecoveryFile::writeFailed);
         const auto error = window.recovery()->writeNow();
+        QVERIFY(!window.document()->setValue("edges.canny_high", 203));
+        QVERIFY(window.recovery()->writeNow());
         qputenv("OMNITUNE_RECOVERY_DIR", dir);
         QVERIFY(error);
         QVERIFY2(window.notices()->text().contains("cannot be kept for crash recovery"), qPrintable(window.notices()->text()));
-        QCOMPARE(std::get<int>(window.document()->value("edges.canny_high")), 202);
+        QCOMPARE(failures.count(), 1);  // said once, not after every edit
+        QCOMPARE(std::get<int>(window.document()->value("edges.canny_high")), 203);
         window.document()->undoStack()->setClean();
     }
 

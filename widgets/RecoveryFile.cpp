@@ -87,27 +87,30 @@ std::optional<QString> RecoveryFile::writeNow()
     const QString file = fileFor(doc_->path());
     if (!written_.isEmpty() && written_ != file) discard();  // the config was saved elsewhere
     QDir().mkpath(directory());
-    if (lockedByOther(file)) {
-        const QString why = tr("Unsaved edits cannot be kept for crash recovery in %1: another OmniTune window "
-                               "keeps its own edits of this config there").arg(file);
-        emit writeFailed(why);
-        return why;
-    }
+    if (lockedByOther(file))
+        return fail(tr("Unsaved edits cannot be kept for crash recovery in %1: another OmniTune window "
+                       "keeps its own edits of this config there").arg(file));
     std::string text = serializeConfig(doc_->config());
     // After the "%YAML" and "---" lines: says what the file is to whoever finds it.
     const std::size_t body = text.find('\n', text.find("---"));
-    const QString what = doc_->path().isEmpty() ? QStringLiteral("a config with no file yet") : doc_->path();
+    QString what = doc_->path().isEmpty() ? QStringLiteral("a config with no file yet") : doc_->path();
+    what.replace('\n', ' ');  // stays one comment line
     text.insert(body == std::string::npos ? 0 : body + 1,
                 "# OmniTune crash recovery: unsaved edits of " + what.toStdString() + "\n");
     QSaveFile out(file);  // temporary file + rename: a kill while writing leaves the last good copy
     if (!out.open(QIODevice::WriteOnly) || out.write(text.data(), qint64(text.size())) != qint64(text.size()) ||
-        !out.commit()) {
-        const QString why = tr("Unsaved edits cannot be kept for crash recovery in %1: %2").arg(file, out.errorString());
-        emit writeFailed(why);
-        return why;
-    }
+        !out.commit())
+        return fail(tr("Unsaved edits cannot be kept for crash recovery in %1: %2").arg(file, out.errorString()));
     written_ = file;
+    lastFailure_.clear();
     return std::nullopt;
+}
+
+QString RecoveryFile::fail(const QString& why)
+{
+    if (why != lastFailure_) emit writeFailed(why);  // not again every few seconds
+    lastFailure_ = why;
+    return why;
 }
 
 void RecoveryFile::discard()

@@ -68,10 +68,11 @@ public:
     QString writtenFile() const { return written_; }
 
 signals:
-    void writeFailed(const QString& message);  // once per failure; the edits stay in memory
+    void writeFailed(const QString& message);  // once per distinct failure; the edits stay in memory
 
 private:
     void onEdited();
+    QString fail(const QString& why);  // reports a write failure once; returns it
     bool lockedByOther(const QString& file);  // locks `file` for this run unless a live window has it
 
     ConfigDocument* doc_;
@@ -82,6 +83,7 @@ private:
     // config does not offer live edits as a crash's; a killed run's lock is stale (dead PID).
     std::unique_ptr<QLockFile> lock_;
     QString locked_;  // the recovery file lock_ is for
+    QString lastFailure_;  // reported already; cleared by a successful write
 };
 
 }  // namespace omnitune
