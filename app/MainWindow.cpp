@@ -12,6 +12,8 @@
 #include "widgets/PixelInspector.h"
 #include "widgets/RecentFiles.h"
 #include "widgets/ScreenFit.h"
+#include "widgets/RecoveryFile.h"
+#include "widgets/RecoveryOffer.h"
 #include "calib/session/Session.h"
 #include "calib/source/SessionSource.h"
 #include "widgets/SessionSweepPanel.h"
@@ -134,6 +136,8 @@ MainWindow::MainWindow(QWidget* parent)
     escape->setShortcut(Qt::Key_Escape);
     connect(escape, &QAction::triggered, view_, [this] { view_->setFocus(Qt::ShortcutFocusReason); });
     addAction(escape);
+    recovery_ = new RecoveryFile(&doc_, this);
+    connect(recovery_, &RecoveryFile::writeFailed, this, [this](const QString& why) { notices_->add(tr("Crash recovery:"), {why}); });
 
     setAcceptDrops(true);  // a session folder, video, image or config.yml dropped on the window opens
     buildMenus();
@@ -146,6 +150,8 @@ MainWindow::~MainWindow()
 {
     // The documents outlive the widgets and labels declared after them; a dirty undo stack
     // still signals "clean" while it is destroyed. Nothing may reach the half-destroyed window.
+    delete recovery_;  // listens to the undo stack, which signals while it is destroyed
+    recovery_ = nullptr;
     doc_.disconnect();
     truth_.disconnect();
     delete sweepPanel_;  // stops its thread before the members it reports to go
@@ -256,6 +262,9 @@ bool MainWindow::openSource(const QString& path)
     if (!session || !session->reader().hasConfig()
         || !configFiles_->openSessionConfig(QString::fromStdString(session->reader().configPath())))
         configFiles_->keepFor(sourceName_, path, sessionFolder);
+    // Edits an earlier run left unsaved for the config now on screen (or for the defaults),
+    // offered only while nothing of this run is unsaved, so they never mix with live edits.
+    if (!doc_.isDirty()) offerRecoveredEdits();
     source_ = std::move(opened.source);
     sourcePath_ = path;  // Apply to whole session re-opens it in a thread of its own
     applyToSessionAction_->setEnabled(true);
@@ -300,7 +309,17 @@ void MainWindow::openTruth(const QString& sessionFolder, cv::Size frameSize)
         notices_->add(tr("Ground truth (truth.csv):"), warnings);
 }
 
-bool MainWindow::openConfig(const QString& path) { return configFiles_->open(path); }
+bool MainWindow::openConfig(const QString& path)
+{
+    if (!configFiles_->open(path)) return false;
+    offerRecoveredEdits();
+    return true;
+}
+
+void MainWindow::offerRecoveredEdits()
+{
+    notices_->add(tr("Crash recovery:"), offerRecovery(this, *recovery_, doc_));
+}
 
 bool MainWindow::openPath(const QString& path)
 {
@@ -415,9 +434,10 @@ bool MainWindow::maybeKeepTruth()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (maybeKeepTruth() && configFiles_->maybeSave(tr("The config has unsaved changes. Save them first?"), false))
+    if (maybeKeepTruth() && configFiles_->maybeSave(tr("The config has unsaved changes. Save them first?"), false)) {
+        recovery_->discard();  // saved, or dropped on purpose
         event->accept();
-    else
+    } else
         event->ignore();
 }
 

@@ -25,6 +25,7 @@ class SessionSweepPanel;
 struct SweepResult;
 class ThresholdPanel;
 class RecentFiles;
+class RecoveryFile;
 class TruthMarker;
 
 class MainWindow : public QMainWindow {
@@ -47,6 +48,7 @@ public:
     FrameNavigator* navigator() const { return nav_; }
     NoticeBar* notices() const { return notices_; }
     ThresholdPanel* thresholdPanel() const { return panel_; }
+    RecoveryFile* recovery() const { return recovery_; }
     CandidateTableModel* candidates() const { return candidates_; }
     std::shared_ptr<const PipelineRun> lastRun() const { return lastRun_; }
     bool isProcessing() const;
@@ -78,6 +80,7 @@ private:
     void chooseConfig();
     void openTruth(const QString& sessionFolder, cv::Size frameSize);  // frameSize: bounds the truth rows
     void chooseSourceFile();
+    void offerRecoveredEdits();  // edits an earlier run left unsaved for the current config
 
     ConfigDocument doc_;
     TruthDocument truth_;
@@ -90,6 +93,7 @@ private:
     RecentFiles* recent_ = nullptr;
     NoticeBar* notices_ = nullptr;
     ConfigFiles* configFiles_ = nullptr;  // open, save, ask; which config a source gets
+    RecoveryFile* recovery_ = nullptr;  // keeps unsaved config edits through a crash
     QLabel* resultLabel_;
     QLabel* truthLabel_;
     QLabel* timingLabel_;

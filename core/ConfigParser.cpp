@@ -41,7 +41,13 @@ std::optional<ConfigValue> readValue(const ConfigKey& k, const cv::FileNode& n, 
             return ConfigValue(std::string(n) == "true");
         break;
     case ValueType::Text:
-        if (n.isString()) return ConfigValue(std::string(n));
+        if (n.isString()) {
+            const std::string s(n);
+            if (findUnsavableCharacter(s) == std::string::npos) return ConfigValue(s);
+            why = "contains a control character (at " + std::to_string(findUnsavableCharacter(s)) +
+                  "), which could not be saved back";
+            return std::nullopt;
+        }
         break;
     case ValueType::Choice:
         if (n.isString()) {

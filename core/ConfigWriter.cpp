@@ -55,11 +55,16 @@ std::string serializeConfig(const Config& config)
         }
         fs.writeComment(comment(k));
         const ConfigValue v = k.get(config);
+        // Text goes through write(), not <<, which takes a text starting with [ { ] } for the
+        // start or end of a list or map (a model "[test]" wrote a broken file, "]x" threw).
+        if (const std::string* s = std::get_if<std::string>(&v)) {
+            fs.write(leaf, *s);
+            continue;
+        }
         fs << leaf;
         if (const int* i = std::get_if<int>(&v)) fs << *i;
         else if (const double* d = std::get_if<double>(&v)) fs << *d;
         else if (const bool* b = std::get_if<bool>(&v)) fs << int(*b);
-        else if (const std::string* s = std::get_if<std::string>(&v)) fs << *s;
         else fs << std::get<std::vector<double>>(v);
     }
     while (!open.empty()) {

@@ -20,9 +20,22 @@ std::optional<YamlParseError> openYamlText(const std::string& text, cv::FileStor
             err.message = m[2];
         }
         return err;
+    } catch (const std::exception& e) {
+        // OpenCV's parser lets std::length_error out on some malformed keys (" n:1\n :",
+        // found by fuzz/fuzz_config); any escape would end the program.
+        return YamlParseError{0, std::string("the YAML parser gave up (") + e.what() + ")"};
     }
     if (!fs.isOpened()) return YamlParseError{0, "not YAML"};
     return std::nullopt;
+}
+
+std::size_t findUnsavableCharacter(const std::string& value)
+{
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const auto c = static_cast<unsigned char>(value[i]);
+        if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') return i;
+    }
+    return std::string::npos;
 }
 
 }  // namespace omnitune

@@ -18,4 +18,9 @@ struct YamlParseError {
 // numbers corrected).
 std::optional<YamlParseError> openYamlText(const std::string& text, cv::FileStorage& fs);
 
+// Where `value` holds a character cv::FileStorage cannot write and read back (a control
+// character other than tab, newline and carriage return, e.g. from an escape like "\1"), or
+// std::string::npos. Parsers refuse such text so that every file they load saves back readable.
+std::size_t findUnsavableCharacter(const std::string& value);
+
 }  // namespace omnitune

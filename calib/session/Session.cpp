@@ -132,7 +132,11 @@ Reader textKey(std::function<std::string&(SessionInfo&)> field)
 {
     return [=](const cv::FileNode& n, SessionInfo& info) -> std::optional<SessionIssue> {
         if (n.isString()) {
-            field(info) = std::string(n);
+            const std::string s(n);
+            if (findUnsavableCharacter(s) != std::string::npos)
+                return keyIssue(SessionIssueKind::WrongType,
+                                "contains a control character, which could not be saved back");
+            field(info) = s;
             return std::nullopt;
         }
         // An unquoted number in a hand-edited file is still meant as text.
@@ -277,9 +281,9 @@ std::string serializeSessionInfo(const SessionInfo& info)
     cv::FileStorage fs(".yml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
     fs.writeComment("OmniTune recorded session. Reference: docs/sessions.md");
     fs << "session_format" << kSessionFormatVersion;
-    fs << "created" << info.created;
+    fs.write("created", info.created);  // write(), not <<: text may start with [ { ] }
     fs << "camera" << "{";
-    fs << "model" << info.camera.model;
+    fs.write("model", info.camera.model);
     fs << "frame_rate" << info.camera.frameRate;
     fs << "exposure" << info.camera.exposure;
     fs << "white_balance_blue" << info.camera.whiteBalanceBlue;
@@ -292,8 +296,8 @@ std::string serializeSessionInfo(const SessionInfo& info)
     fs << "pixel_format" << std::string(pixelFormatName(info.pixelFormat));
     fs << "frame_count" << info.frameCount;
     fs << "frame_rate" << info.frameRate;
-    fs << "notes" << info.notes;
-    if (!info.configFile.empty()) fs << "config_file" << info.configFile;
+    fs.write("notes", info.notes);
+    if (!info.configFile.empty()) fs.write("config_file", info.configFile);
     if (info.complete) fs << "complete" << std::string(*info.complete ? "true" : "false");
     return fs.releaseAndGetString();
 }
