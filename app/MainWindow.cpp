@@ -66,6 +66,10 @@ MainWindow::MainWindow(QWidget* parent)
     truthLabel_->setStyleSheet("color: #c030c0");  // the truth overlay's colour
     truthLabel_->setWordWrap(true);  // the marking banner must never widen the window
     resultLabel_->setWordWrap(true);
+    // Room for two lines from the start, so the panes do not jump while playing when a
+    // result or a truth line wraps.
+    for (QLabel* l : {resultLabel_, truthLabel_})
+        l->setMinimumHeight(l->fontMetrics().boundingRect(QRect(0, 0, 4000, 4000), Qt::TextWordWrap, "X\nX").height() + 2);
     resultRow->addWidget(truthLabel_, 1);
     layout->addLayout(resultRow);
     layout->addWidget(nav_);

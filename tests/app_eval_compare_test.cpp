@@ -86,7 +86,7 @@ private slots:
         // A copy of the demo without truth.csv: detections and changes, no ratio to claim.
         const QString session = tmp_.filePath("notruth");
         QVERIFY(QDir().mkpath(session + "/frames"));
-        for (const QString& f : {"session.yml", "config.yml"}) QVERIFY(QFile::copy(kDemo + "/" + f, session + "/" + f));
+        for (const char* f : {"session.yml", "config.yml"}) QVERIFY(QFile::copy(kDemo + "/" + QLatin1String(f), session + "/" + QLatin1String(f)));
         for (const QString& f : QDir(kDemo + "/frames").entryList(QDir::Files))
             QVERIFY(QFile::copy(kDemo + "/frames/" + f, session + "/frames/" + f));
         const Run r = eval({"--session", session, "--compare", strict_, session + "/config.yml"});

@@ -386,6 +386,12 @@ bool ThresholdPanel::eventFilter(QObject* watched, QEvent* event)
         search_->clear();
         return true;
     }
+    if (watched == search_ && event->type() == QEvent::ShortcutOverride &&
+        static_cast<QKeyEvent*>(event)->key() == Qt::Key_Escape && !search_->text().isEmpty()) {
+        // The window's Escape (keyboard back to the panes) waits until the search is cleared.
+        event->accept();
+        return true;
+    }
     if (event->type() == QEvent::ShortcutOverride) {
         // Ctrl+Z / Ctrl+Shift+Z undo and redo the config, also with the cursor still in the
         // field just edited: a value applies on Return, so the field's own text undo would
