@@ -1,6 +1,5 @@
 #include "widgets/TruthDocument.h"
 
-#include "widgets/BackupOnce.h"
 #include "core/ConfigWriter.h"
 #include "calib/session/Session.h"
 
@@ -73,12 +72,10 @@ std::optional<QString> TruthDocument::remove(int frame)
 std::optional<QString> TruthDocument::save()
 {
     if (!isOpen()) return std::nullopt;
-    const bool keepBackup = !backedUpThisRun(path_);  // a reopened session keeps its first backup
-    if (const auto err = writeFileAtomically(path_.toStdString(), serializeTruthCsv(rows_), keepBackup)) {
+    if (const auto err = writeFileAtomically(path_.toStdString(), serializeTruthCsv(rows_))) {
         unsaved_ = true;
         return tr("%1 (the marks are kept in memory; the next mark tries again)").arg(QString::fromStdString(*err));
     }
-    rememberBackup(path_);
     unsaved_ = false;
     return std::nullopt;
 }

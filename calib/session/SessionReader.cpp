@@ -1,6 +1,7 @@
 #include "calib/session/SessionReader.h"
 
 #include "calib/source/ImageFile.h"
+#include "core/RegularFile.h"
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -18,6 +19,7 @@ namespace {
 
 std::optional<std::string> readText(const fs::path& path)
 {
+    if (checkRegularFile(path.string())) return std::nullopt;  // a FIFO would block the reader for good
     std::ifstream in(path, std::ios::binary);
     if (!in) return std::nullopt;
     std::stringstream buffer;
