@@ -20,7 +20,8 @@ std::optional<Config> loadToolConfig(const std::optional<std::string>& configPat
         path = *configPath;
     } else {
         const auto candidate = std::filesystem::path(inputPath) / kSessionConfigFile;
-        if (!std::filesystem::is_regular_file(candidate)) {
+        std::error_code ec;
+        if (!std::filesystem::exists(candidate, ec)) {  // anything else there: loadConfig says what is wrong
             error = "no --config given and " + inputPath + " holds no " + std::string(kSessionConfigFile);
             return std::nullopt;
         }
