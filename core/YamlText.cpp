@@ -209,6 +209,13 @@ std::optional<FileIssue> checkWrittenValues(const std::string& text, const cv::F
     return std::nullopt;
 }
 
+int yamlLineOfKey(const std::string& text, const std::string& path)
+{
+    for (const OutlineLine& o : outline(text, INT_MAX))
+        if (o.hasKey && o.path == path) return o.line;
+    return 0;
+}
+
 std::string yamlTypeOf(const cv::FileNode& n)
 {
     if (n.isInt()) return "an integer";

@@ -37,6 +37,10 @@ std::optional<YamlParseError> checkYamlShape(const std::string& text);
 std::optional<FileIssue> checkWrittenValues(const std::string& text, const cv::FileStorage& fs,
                                             const std::string& fileName);
 
+// The line of the first "key:" with the dotted `path` ("camera.gain") in block-style YAML; 0
+// when absent. cv::FileNode does not know its line; messages want it.
+int yamlLineOfKey(const std::string& text, const std::string& path);
+
 // "an integer", "a number", "text \"abc\"", "a list", "a section", "nothing": for messages.
 std::string yamlTypeOf(const cv::FileNode& n);
 
