@@ -93,15 +93,6 @@ int createTemp(const std::string& path, std::string& temp)
     return -1;
 }
 
-// Makes a rename durable: the folder's entry is flushed too (best effort).
-void syncFolder(const std::string& path)
-{
-    const int fd = ::open(folderOf(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd < 0) return;
-    (void)::fsync(fd);
-    ::close(fd);
-}
-
 // The backup rule of AtomicFile.h: FILE.bak made once, from the file about to be replaced.
 std::optional<std::string> keepFirstBackup(const std::string& path)
 {
@@ -158,8 +149,7 @@ std::optional<std::string> StagedFile::commit(bool keepBackup)
         stopPoint("backup");
     }
     if (::rename(temp_.c_str(), path_.c_str()) != 0) return "cannot replace " + path_ + ": " + errnoText(errno);
-    temp_.clear();
-    syncFolder(path_);
+    temp_.clear();  // the old file or the new one, whole, even after a power cut: never a mix
     return std::nullopt;
 }
 
