@@ -98,10 +98,11 @@ std::optional<std::string> keepFirstBackup(const std::string& path)
 {
     const std::string backup = path + ".bak";
     struct stat st {};
-    if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;  // nothing to keep
+    if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;  // nothing to keep
     if (::lstat(backup.c_str(), &st) == 0) return std::nullopt;                          // the first backup stays
-    if (!failPoint("link") && ::link(path.c_str(), backup.c_str()) == 0) return std::nullopt;
-    if (errno == EEXIST) return std::nullopt;
+    if (failPoint("link")) errno = EPERM;  // what a file system without hard links says
+    else if (::link(path.c_str(), backup.c_str()) == 0) return std::nullopt;
+    if (errno == EEXIST) return std::nullopt;  // another save made it a moment ago
     // No hard links here (a FAT-formatted stick): copy through a temporary of its own.
     std::ifstream in(path, std::ios::binary);
     std::stringstream old;

@@ -512,6 +512,28 @@ private slots:
         QVERIFY(load.config.edges.cannyLow == 50 || load.config.edges.cannyLow == 70);
         QCOMPARE(tempFilesIn(dir.path()), QStringList());
     }
+
+    // Issue 14, defect 5: a save that finds the folder locked by another save for too long
+    // refuses clearly and writes nothing. (A second lock in this process stands in for the
+    // other program: flock excludes separate opens of the folder alike.)
+    void aLockedFolderIsRefusedClearly()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("truth.csv");
+        writeFile(path, "old\n");
+        std::optional<std::string> err;
+        {
+            const FolderSaveLock otherProgram(path.toStdString());
+            QVERIFY(!otherProgram.error());
+            err = writeFileAtomically(path.toStdString(), "new\n");
+        }
+        QVERIFY(err);
+        QVERIFY2(QString::fromStdString(*err).contains("another program") && QString::fromStdString(*err).contains(dir.path()),
+                 err->c_str());
+        QCOMPARE(readFile(path), std::string("old\n"));
+        QVERIFY(!writeFileAtomically(path.toStdString(), "new\n"));  // free again
+        QCOMPARE(readFile(path), std::string("new\n"));
+    }
 };
 
 QTEST_GUILESS_MAIN(ConfigTest)
