@@ -1,6 +1,7 @@
 #include "core/YamlText.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
@@ -122,19 +123,25 @@ std::vector<OutlineLine> outline(const std::string& text, int maxDepth)
 }
 
 // Why OpenCV would read the plain scalar `s` as another integer than written, or nothing.
+// (No std::regex: its recursive matcher overflows the stack on a long token.)
 std::optional<std::string> misreadInteger(const std::string& s)
 {
-    static const std::regex decimal(R"([-+]?[0-9]+)"), hex(R"([-+]?0[xX][0-9a-fA-F]+)");
-    const bool isHex = std::regex_match(s, hex);
-    if (!isHex && !std::regex_match(s, decimal)) return std::nullopt;
-    const std::size_t digits = s.find_first_not_of("+-");
-    if (!isHex && s.size() > digits + 1 && s[digits] == '0')
-        return s + " has a leading zero, which YAML reads as an octal number (" +
-               std::to_string(std::strtoll(s.c_str(), nullptr, 8)) + "); write it without the zero";
+    const std::size_t sign = s.empty() || (s[0] != '-' && s[0] != '+') ? 0 : 1;
+    const bool isHex = s.size() > sign + 2 && s[sign] == '0' && (s[sign + 1] == 'x' || s[sign + 1] == 'X');
+    const std::size_t digits = sign + (isHex ? 2 : 0);
+    if (s.size() == digits) return std::nullopt;
+    for (std::size_t i = digits; i < s.size(); ++i)
+        if (!(isHex ? std::isxdigit(static_cast<unsigned char>(s[i])) : std::isdigit(static_cast<unsigned char>(s[i]))))
+            return std::nullopt;  // not an integer: a real, text, ...
+    if (!isHex && s.size() > digits + 1 && s[digits] == '0') {
+        const std::string octal = s.size() - digits < 12 ? std::to_string(std::strtoll(s.c_str(), nullptr, 8)) : "?";
+        return s + " has a leading zero, which YAML reads as an octal number (" + octal + "); write it without the zero";
+    }
     errno = 0;
     const long long v = std::strtoll(s.c_str(), nullptr, 0);
     if (errno == ERANGE || v < INT_MIN || v > INT_MAX)
-        return s + " is beyond the integer range " + std::to_string(INT_MIN) + ".." + std::to_string(INT_MAX);
+        return (s.size() > 40 ? s.substr(0, 40) + "..." : s) + " is beyond the integer range " + std::to_string(INT_MIN) +
+               ".." + std::to_string(INT_MAX);
     return std::nullopt;
 }
 

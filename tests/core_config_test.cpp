@@ -231,6 +231,8 @@ private slots:
                                                << ConfigIssueKind::OutOfRange << "camera.gain" << "leading zero";
         QTest::newRow("octal-looking in a list") << QByteArray(withKey("hough", "  area_bounds: [ 070, 105, 236 ]\n").c_str())
                                                  << ConfigIssueKind::OutOfRange << "hough.area_bounds" << "070";
+        QTest::newRow("900 KB of digits") << QByteArray(withKey("camera", "  gain: " + std::string(900 * 1024, '7') + "\n").c_str())
+                                          << ConfigIssueKind::OutOfRange << "camera.gain" << "is beyond the integer range";
         // Issue 14, defect 1: input that would overflow the stack of OpenCV's recursive parser.
         QTest::newRow("50000 nested brackets") << QByteArray(("schema: 1\nx: " + std::string(50000, '[') + "\n").c_str())
                                                << ConfigIssueKind::ParseError << "" << "nested more than 64 levels";
