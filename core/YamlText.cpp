@@ -191,6 +191,9 @@ std::optional<YamlParseError> openYamlText(const std::string& text, cv::FileStor
             err.message = m[2];
         }
         return err;
+    } catch (const std::exception& e) {
+        // OpenCV's reader also fails with other exceptions, e.g. std::length_error on "  : 1".
+        return YamlParseError{0, std::string("malformed YAML (the reader failed: ") + e.what() + ")"};
     }
     if (!fs.isOpened()) return YamlParseError{0, "not YAML"};
     return std::nullopt;

@@ -233,6 +233,9 @@ private slots:
                                                  << ConfigIssueKind::OutOfRange << "hough.area_bounds" << "070";
         QTest::newRow("900 KB of digits") << QByteArray(withKey("camera", "  gain: " + std::string(900 * 1024, '7') + "\n").c_str())
                                           << ConfigIssueKind::OutOfRange << "camera.gain" << "is beyond the integer range";
+        // Found by fuzzing: OpenCV's reader throws std::length_error, not cv::Exception, on a key-less line.
+        QTest::newRow("key-less line") << QByteArray("schema: 1\nedges:\n   canny_low: 1\n   : 1\n")
+                                       << ConfigIssueKind::ParseError << "" << "malformed YAML";
         // Issue 14, defect 1: input that would overflow the stack of OpenCV's recursive parser.
         QTest::newRow("50000 nested brackets") << QByteArray(("schema: 1\nx: " + std::string(50000, '[') + "\n").c_str())
                                                << ConfigIssueKind::ParseError << "" << "nested more than 64 levels";
