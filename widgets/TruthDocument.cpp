@@ -1,6 +1,7 @@
 #include "widgets/TruthDocument.h"
 
 #include "core/ConfigWriter.h"
+#include "core/RegularFile.h"
 #include "calib/session/Session.h"
 
 #include <QDir>
@@ -17,6 +18,10 @@ std::optional<QString> TruthDocument::open(const QString& sessionDir, QStringLis
     std::map<int, TruthRow> rows;
     QFile file(path);
     if (file.exists()) {
+        if (const auto notRegular = checkRegularFile(path.toStdString())) {  // a FIFO would block the window for good
+            close(tr("%1: %2; ground truth cannot be marked").arg(path, QString::fromStdString(*notRegular)));
+            return closedReason_;
+        }
         if (!file.open(QIODevice::ReadOnly)) {
             close(tr("%1: cannot be read (%2); ground truth cannot be marked").arg(path, file.errorString()));
             return closedReason_;
