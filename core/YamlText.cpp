@@ -30,7 +30,7 @@ std::vector<OutlineLine> outline(const std::string& text, int maxDepth)
 {
     struct Open {
         std::size_t column;
-        std::string key;  // "" for a list item
+        std::string key;  // "#line.column" for a list item (items are distinct, never duplicates)
     };
     std::vector<OutlineLine> out;
     std::vector<Open> open;  // the block sections and list items the current line is inside

@@ -2,7 +2,8 @@
 // file belongs is refused with its name (before: the tools hung or crashed), concurrent
 // `omnitune-config --upgrade` runs of one file keep the original as .bak, the backup survives a
 // second program run, and a save interrupted at every step (a test-only build of the writer
-// with fault hooks) leaves config, mask and backup each complete, old or new.
+// with fault hooks, saving through the window's ConfigDocument when the GUI is built) leaves
+// config, mask and backup each complete, old or new.
 #include "calib/session/SessionWriter.h"
 #include "core/ConfigParser.h"
 #include "core/ConfigWriter.h"
