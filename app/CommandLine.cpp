@@ -1,5 +1,6 @@
 #include "app/CommandLine.h"
 
+#include <cmath>
 #include <cstdlib>
 
 namespace omnitune {
@@ -82,7 +83,7 @@ std::optional<double> parseDouble(const std::string& text)
 {
     char* end = nullptr;
     const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0') return std::nullopt;
+    if (text.empty() || *end != '\0' || !std::isfinite(v)) return std::nullopt;  // "nan", "inf" are no numbers
     return v;
 }
 

@@ -27,7 +27,7 @@ struct CommandLine {
 CommandLine parseCommandLine(int argc, const char* const* argv, const std::vector<OptionSpec>& specs);
 std::string usageText(const std::string& program, const std::string& summary, const std::vector<OptionSpec>& specs);
 
-// Number arguments: the value, or nullopt when it is not a number (the caller names the option).
+// Number arguments: the value, or nullopt when it is not a (finite) number (the caller names the option).
 std::optional<int> parseInt(const std::string& text);
 std::optional<double> parseDouble(const std::string& text);
 

@@ -13,7 +13,8 @@ int usage()
 {
     std::cerr << "usage: omnitune-config --check FILE   check a config, print its warnings and first error\n"
                  "       omnitune-config --upgrade FILE rewrite a config with every current key (missing ones\n"
-                 "                                      get their defaults; the old file is kept as FILE.bak)\n"
+                 "                                      get their defaults; FILE.bak keeps the file as it was\n"
+                 "                                      before OmniTune first saved it, and is never overwritten)\n"
                  "       omnitune-config --defaults     print a config.yml with every default\n"
                  "       omnitune-config --doc          print docs/config.md (the schema reference)\n";
     return 2;
@@ -45,7 +46,7 @@ int upgrade(const char* path)
         std::cerr << "error: " << err->toString() << "\n";
         return 1;
     }
-    std::cout << path << ": written with every key of schema " << omnitune::kConfigSchemaVersion << " (previous as .bak)\n";
+    std::cout << path << ": written with every key of schema " << omnitune::kConfigSchemaVersion << " (" << path << ".bak holds the file from before OmniTune first saved it)\n";
     return 0;
 }
 

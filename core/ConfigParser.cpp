@@ -1,29 +1,18 @@
 #include "core/ConfigParser.h"
 
 #include "core/ConfigSchema.h"
+#include "core/RegularFile.h"
 #include "core/YamlText.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 namespace omnitune {
 
 namespace {
-
-std::string typeOf(const cv::FileNode& n)
-{
-    if (n.isInt()) return "an integer";
-    if (n.isReal()) return "a number";
-    if (n.isString()) return "text \"" + std::string(n) + "\"";
-    if (n.isSeq()) return "a list";
-    if (n.isMap()) return "a section";
-    return "nothing";
-}
 
 // Reads one key's node into a value, or explains why it cannot.
 std::optional<ConfigValue> readValue(const ConfigKey& k, const cv::FileNode& n, std::string& why)
@@ -65,7 +54,7 @@ std::optional<ConfigValue> readValue(const ConfigKey& k, const cv::FileNode& n, 
             std::vector<double> v;
             for (const cv::FileNode& e : n) {
                 if (!e.isInt() && !e.isReal()) {
-                    why = "expected a list of numbers, found " + typeOf(e) + " in it";
+                    why = "expected a list of numbers, found " + yamlTypeOf(e) + " in it";
                     return std::nullopt;
                 }
                 v.push_back(double(e));
@@ -75,7 +64,7 @@ std::optional<ConfigValue> readValue(const ConfigKey& k, const cv::FileNode& n, 
         break;
     }
     why = "expected " + std::string(k.type == ValueType::Bool ? "0/1 or true/false" : valueTypeName(k.type)) +
-          ", found " + typeOf(n);
+          ", found " + yamlTypeOf(n);
     return std::nullopt;
 }
 
@@ -95,7 +84,6 @@ void collectUnknown(const cv::FileNode& node, const std::string& prefix, std::ve
     }
 }
 
-
 }  // namespace
 
 ConfigLoad parseConfig(const std::string& text, const std::string& fileName)
@@ -113,13 +101,17 @@ ConfigLoad parseConfig(const std::string& text, const std::string& fileName)
         out.error = ConfigIssue{ConfigIssueKind::ParseError, fileName, err->line, "", "not a valid YAML config: " + err->message};
         return out;
     }
+    if (auto misread = checkWrittenValues(text, fs, fileName)) {
+        out.error = misread;
+        return out;
+    }
     const cv::FileNode root = fs.root();
     if (!root.isMap()) return fail(ConfigIssueKind::NotAConfig, "", "the top level is not a map of sections");
 
     const cv::FileNode schema = root["schema"];
     if (schema.empty() || schema.isNone())
         return fail(ConfigIssueKind::NotAConfig, "schema", "no 'schema' key: this is not an OmniTune config");
-    if (!schema.isInt()) return fail(ConfigIssueKind::WrongType, "schema", "expected an integer, found " + typeOf(schema));
+    if (!schema.isInt()) return fail(ConfigIssueKind::WrongType, "schema", "expected an integer, found " + yamlTypeOf(schema));
     if (int(schema) != kConfigSchemaVersion)
         return fail(ConfigIssueKind::UnknownSchema, "schema",
                     "schema " + std::to_string(int(schema)) + " is not known to this build, which reads schema " +
@@ -162,27 +154,26 @@ ConfigLoad parseConfig(const std::string& text, const std::string& fileName)
 ConfigLoad loadConfig(const std::string& path)
 {
     ConfigLoad out;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        out.error = ConfigIssue{ConfigIssueKind::FileUnreadable, path, 0, "",
-                                std::filesystem::exists(path) ? "cannot be read" : "no such file"};
+    std::string why;
+    const auto text = readRegularFile(path, kMaxYamlBytes, why);
+    if (!text) {
+        out.error = ConfigIssue{ConfigIssueKind::FileUnreadable, path, 0, "", why};
         return out;
     }
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    out = parseConfig(buffer.str(), path);
+    out = parseConfig(*text, path);
     if (!out.ok() || out.config.geometry.maskFile.empty()) return out;
 
-    const auto maskPath = std::filesystem::path(path).parent_path() / out.config.geometry.maskFile;
+    const auto maskPath = (std::filesystem::path(path).parent_path() / out.config.geometry.maskFile).string();
     cv::Mat mask;
+    const auto notRegular = checkRegularFile(maskPath);
     try {
-        mask = cv::imread(maskPath.string(), cv::IMREAD_GRAYSCALE);
+        if (!notRegular) mask = cv::imread(maskPath, cv::IMREAD_GRAYSCALE);
     } catch (const cv::Exception&) {
         mask.release();
     }
     if (mask.empty()) {
         out.error = ConfigIssue{ConfigIssueKind::MaskError, path, 0, "geometry.mask_file",
-                                "cannot read the mask image " + maskPath.string()};
+                                "cannot read the mask image " + maskPath + (notRegular ? ": " + *notRegular : "")};
         return out;
     }
     out.config.mask = mask;

@@ -413,8 +413,11 @@ std::string configSchemaMarkdown()
        << "beyond OpenCV to read it. It starts with `schema: " << kConfigSchemaVersion << "`; a file with another\n"
        << "schema version is refused. Files OmniTune writes also carry `saved_by` at the top and `complete: 1`\n"
        << "at the end: a saved file without the end marker was cut short and is refused. A missing key takes its\n"
-       << "default with a warning; an unknown key is reported as a warning (a typo?). Saving writes a temporary\n"
-       << "file and renames it over `config.yml`, keeping the previous file as `config.yml.bak`.\n\n"
+       << "default with a warning; an unknown key is reported as a warning (a typo?). A key or section written\n"
+       << "twice, an integer beyond the integer range or with a leading zero (`0100`, octal in YAML: write `100`),\n"
+       << "nesting deeper than 64 levels and files above 1 MiB are refused with the line. Saving writes a\n"
+       << "temporary file and renames it over `config.yml`; `config.yml.bak` keeps the file as it was before\n"
+       << "OmniTune first saved over it and is never overwritten (delete it to take a fresh backup).\n\n"
        << "Defaults marked (thesis) are the numbers published in the thesis (chapter 4); the others are\n"
        << "OmniTune's choices for the bundled simulated camera and should be tuned per robot.\n";
     for (const auto& [name, text] : sections) {

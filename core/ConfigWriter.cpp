@@ -5,11 +5,9 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include <cerrno>
-#include <cstring>
-#include <fcntl.h>
+#include <charconv>
+#include <cstdio>
 #include <filesystem>
-#include <unistd.h>
 
 namespace omnitune {
 
@@ -28,143 +26,97 @@ std::string comment(const ConfigKey& k)
     return c;
 }
 
-std::string errnoText() { return std::strerror(errno); }
+// The shortest text that reads back as exactly `v`, always with a '.' or an exponent so that
+// YAML reads a real ("30.0", not "30").
+std::string shortestNumber(double v)
+{
+    char buf[64];
+    const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+    std::string s(buf, end);
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+    return s;
+}
+
+// A string quoted and escaped exactly as OpenCV's own YAML writer does it (so its reader
+// takes it back unchanged).
+std::string quoted(const std::string& s)
+{
+    cv::FileStorage fs(".yml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
+    fs.write("v", s);  // not <<, which takes a text starting with [ { ] } for a list or map
+    const std::string text = fs.releaseAndGetString();
+    const auto at = text.find("\nv: ") + 4;
+    std::string value = text.substr(at, text.find_last_not_of('\n') + 1 - at);
+    if (value.empty() || value.front() != '"') value = "\"" + value + "\"";  // plain words: quoted too
+    return value;
+}
+
+std::string valueText(const ConfigValue& v)
+{
+    if (const int* i = std::get_if<int>(&v)) return std::to_string(*i);
+    if (const double* d = std::get_if<double>(&v)) return shortestNumber(*d);
+    if (const bool* b = std::get_if<bool>(&v)) return *b ? "1" : "0";
+    if (const std::string* s = std::get_if<std::string>(&v)) return quoted(*s);
+    std::string list = "[";
+    for (double d : std::get<std::vector<double>>(v)) list += (list.size() > 1 ? ", " : " ") + shortestNumber(d);
+    return list + " ]";
+}
 
 }  // namespace
 
 std::string serializeConfig(const Config& config)
 {
-    cv::FileStorage fs(".yml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
-    fs.writeComment(" OmniTune detector configuration. Reference: docs/config.md");
-    fs << "schema" << kConfigSchemaVersion;
-    fs << "saved_by" << "OmniTune 0.1";
+    // Written by hand rather than by cv::FileStorage, whose doubles carry 17 digits.
+    std::string out = "%YAML:1.0\n---\n#  OmniTune detector configuration. Reference: docs/config.md\n";
+    out += "schema: " + std::to_string(kConfigSchemaVersion) + "\nsaved_by: \"OmniTune 0.1\"\n";
     std::vector<std::string> open;  // sections currently open
+    auto indent = [&open] { return std::string(3 * open.size(), ' '); };
     for (const ConfigKey& k : configSchema()) {
         auto parts = splitConfigPath(k.path);
         const std::string leaf = parts.back();
         parts.pop_back();
         std::size_t common = 0;
         while (common < open.size() && common < parts.size() && open[common] == parts[common]) ++common;
-        while (open.size() > common) {
-            fs << "}";
-            open.pop_back();
-        }
+        open.resize(common);
         while (open.size() < parts.size()) {
-            fs << parts[open.size()] << "{";
+            out += indent() + parts[open.size()] + ":\n";
             open.push_back(parts[open.size()]);
         }
-        fs.writeComment(comment(k));
-        const ConfigValue v = k.get(config);
-        // Text goes through write(), not <<, which takes a text starting with [ { ] } for the
-        // start or end of a list or map (a model "[test]" wrote a broken file, "]x" threw).
-        if (const std::string* s = std::get_if<std::string>(&v)) {
-            fs.write(leaf, *s);
-            continue;
-        }
-        fs << leaf;
-        if (const int* i = std::get_if<int>(&v)) fs << *i;
-        else if (const double* d = std::get_if<double>(&v)) fs << *d;
-        else if (const bool* b = std::get_if<bool>(&v)) fs << int(*b);
-        else fs << std::get<std::vector<double>>(v);
+        out += indent() + "# " + comment(k) + "\n" + indent() + leaf + ": " + valueText(k.get(config)) + "\n";
     }
-    while (!open.empty()) {
-        fs << "}";
-        open.pop_back();
-    }
-    fs.writeComment(" end marker: a saved file without it was cut short");
-    fs << "complete" << 1;
-    return fs.releaseAndGetString();
-}
-
-namespace {
-
-// Step 1 of an atomic write: the bytes in `path`.tmp, flushed to disk.
-std::optional<std::string> writeTemp(const std::string& path, const std::string& bytes)
-{
-    const std::string tmp = path + ".tmp";
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0) return "cannot create " + tmp + ": " + errnoText();
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            const std::string why = errnoText();
-            ::close(fd);
-            ::unlink(tmp.c_str());
-            return "cannot write " + tmp + ": " + why;
-        }
-        done += std::size_t(n);
-    }
-    const bool synced = ::fsync(fd) == 0;
-    const std::string syncError = synced ? std::string() : errnoText();
-    const bool closed = ::close(fd) == 0;  // always closed, whether the flush worked or not
-    if (!synced || !closed) {
-        const std::string why = synced ? errnoText() : syncError;
-        ::unlink(tmp.c_str());
-        return "cannot flush " + tmp + ": " + why;
-    }
-    return std::nullopt;
-}
-
-// Step 2: keep `path`.bak when asked, then rename the temp over `path`.
-std::optional<std::string> replaceWithTemp(const std::string& path, bool keepBackup)
-{
-    namespace fs = std::filesystem;
-    const std::string tmp = path + ".tmp";
-    std::error_code ec;
-    if (keepBackup && fs::exists(path, ec)) {
-        fs::copy_file(path, path + ".bak", fs::copy_options::overwrite_existing, ec);
-        if (ec) {
-            ::unlink(tmp.c_str());
-            return "cannot keep the backup " + path + ".bak: " + ec.message();
-        }
-    }
-    if (::rename(tmp.c_str(), path.c_str()) != 0) {
-        const std::string why = errnoText();
-        ::unlink(tmp.c_str());
-        return "cannot replace " + path + ": " + why;
-    }
-    return std::nullopt;
-}
-
-}  // namespace
-
-std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& bytes, bool keepBackup)
-{
-    if (auto err = writeTemp(path, bytes)) return err;
-    return replaceWithTemp(path, keepBackup);
+    return out + "#  end marker: a saved file without it was cut short\ncomplete: 1\n";
 }
 
 std::optional<ConfigIssue> saveConfig(const Config& config, const std::string& path, bool keepBackup)
 {
     const auto problems = checkConfig(config, path);
     if (!problems.empty()) return problems.front();
-    // Both files are written and flushed before either replaces its old version, so a failure
-    // (full disk, no permission) never leaves a new mask beside the old config.
+    auto writeError = [&](const std::string& file, const std::string& key, const std::string& message) {
+        return ConfigIssue{ConfigIssueKind::WriteError, file, 0, key, message};
+    };
     std::string maskPath;
+    std::vector<std::uint8_t> png;
     if (!config.mask.empty()) {
         if (config.geometry.maskFile.empty())
             return ConfigIssue{ConfigIssueKind::MaskError, path, 0, "geometry.mask_file",
                                "the config holds a mask image but geometry.mask_file names no file for it"};
         maskPath = (std::filesystem::path(path).parent_path() / config.geometry.maskFile).string();
-        std::vector<std::uint8_t> png;
         if (!cv::imencode(".png", config.mask, png))
-            return ConfigIssue{ConfigIssueKind::WriteError, maskPath, 0, "geometry.mask_file", "cannot encode the mask as PNG"};
-        if (auto err = writeTemp(maskPath, std::string(png.begin(), png.end())))
-            return ConfigIssue{ConfigIssueKind::WriteError, maskPath, 0, "geometry.mask_file", *err};
+            return writeError(maskPath, "geometry.mask_file", "cannot encode the mask as PNG");
     }
-    if (auto err = writeTemp(path, serializeConfig(config))) {
-        if (!maskPath.empty()) ::unlink((maskPath + ".tmp").c_str());
-        return ConfigIssue{ConfigIssueKind::WriteError, path, 0, "", *err};
-    }
+    const FolderSaveLock lock(path);
+    if (lock.error()) return writeError(path, "", *lock.error());
+    // Both files are written and flushed before either replaces its old version, so a failure
+    // (full disk, no permission) never leaves a new mask beside the old config.
+    std::optional<StagedFile> mask;
     if (!maskPath.empty()) {
-        if (auto err = replaceWithTemp(maskPath, keepBackup)) {
-            ::unlink((path + ".tmp").c_str());
-            return ConfigIssue{ConfigIssueKind::WriteError, maskPath, 0, "geometry.mask_file", *err};
-        }
+        mask.emplace(maskPath, std::string(png.begin(), png.end()));
+        if (mask->error()) return writeError(maskPath, "geometry.mask_file", *mask->error());
     }
-    if (auto err = replaceWithTemp(path, keepBackup)) return ConfigIssue{ConfigIssueKind::WriteError, path, 0, "", *err};
+    StagedFile file(path, serializeConfig(config));
+    if (file.error()) return writeError(path, "", *file.error());
+    if (mask)
+        if (auto err = mask->commit(keepBackup)) return writeError(maskPath, "geometry.mask_file", *err);
+    if (auto err = file.commit(keepBackup)) return writeError(path, "", *err);
     return std::nullopt;
 }
 

@@ -8,8 +8,11 @@
 
 #include <QtTest>
 
+#include <csignal>
 #include <fstream>
 #include <sstream>
+#include <sys/resource.h>
+#include <thread>
 
 using namespace omnitune;
 Q_DECLARE_METATYPE(omnitune::ConfigIssueKind)
@@ -63,6 +66,59 @@ bool sameConfig(const Config& a, const Config& b, QString* firstDifference)
             return false;
         }
     return true;
+}
+
+// While it lives, a write past `bytes` into any file fails (EFBIG), as on a full disk.
+class FileSizeLimit {
+public:
+    explicit FileSizeLimit(rlim_t bytes)
+    {
+        std::signal(SIGXFSZ, SIG_IGN);  // the write fails instead of the process being killed
+        getrlimit(RLIMIT_FSIZE, &old_);
+        const rlimit limit{bytes, old_.rlim_max};
+        setrlimit(RLIMIT_FSIZE, &limit);
+    }
+    ~FileSizeLimit() { setrlimit(RLIMIT_FSIZE, &old_); }
+
+private:
+    rlimit old_{};
+};
+
+QStringList tempFilesIn(const QString& folder) { return QDir(folder).entryList({"*.tmp"}, QDir::Files); }
+
+// Values of `k` other than its value in `c`, for the round-trip test (checkConfig picks one).
+std::vector<ConfigValue> otherValues(const ConfigKey& k, const Config& c)
+{
+    const ConfigValue v = k.get(c);
+    switch (k.type) {
+    case ValueType::Int: return {std::get<int>(v) + 1, std::get<int>(v) - 1};
+    case ValueType::Double: {
+        const double d = std::get<double>(v);  // +0.1 has no exact binary form: a real test of the digits
+        return {d + 0.1, d - 0.1, k.min + (k.max - k.min) / 3.0};
+    }
+    case ValueType::Bool: return {!std::get<bool>(v)};
+    case ValueType::Text: return {std::string("Flea2 \"robot 3\": #1 \\ 50% [a, b] {c}")};
+    case ValueType::Choice: {
+        std::vector<ConfigValue> out;
+        for (const auto& choice : k.choices)
+            if (choice != std::get<std::string>(v)) out.push_back(choice);
+        return out;
+    }
+    case ValueType::DoubleList: {
+        std::vector<ConfigValue> out;
+        for (double step : {0.1, -0.1}) {
+            std::vector<double> all = std::get<std::vector<double>>(v), inner = all;
+            for (std::size_t i = 0; i < all.size(); ++i) {
+                all[i] += step;
+                if (i > 0 && i + 1 < all.size()) inner[i] += step;
+            }
+            out.push_back(all);
+            out.push_back(inner);
+        }
+        return out;
+    }
+    }
+    return {};
 }
 
 std::string withKey(const std::string& section, const std::string& body)
@@ -162,7 +218,38 @@ private slots:
         QTest::newRow("distance map sizes differ")
             << QByteArray(withKey("distance_map", "  pixel_radii: [0, 10, 20]\n  ground_distances: [0, 1]\n").c_str())
             << ConfigIssueKind::Inconsistent << "distance_map.ground_distances" << "same number";
+        // Issue 14, defect 8: values OpenCV's reader would take silently wrong.
+        QTest::newRow("duplicate key") << QByteArray(withKey("edges", "  canny_low: 50\n  canny_low: 70\n").c_str())
+                                       << ConfigIssueKind::DuplicateKey << "edges.canny_low" << "written twice";
+        QTest::newRow("duplicate section") << QByteArray("schema: 1\nedges:\n  canny_low: 50\nedges:\n  canny_high: 190\n")
+                                           << ConfigIssueKind::DuplicateKey << "edges" << "written twice";
+        QTest::newRow("duplicate in braces") << QByteArray("schema: 1\nedges: {canny_low: 50, canny_low: 70}\n")
+                                             << ConfigIssueKind::DuplicateKey << "edges.canny_low" << "written twice";
+        QTest::newRow("integer beyond int") << QByteArray(withKey("camera", "  gain: 4294967496\n").c_str())
+                                            << ConfigIssueKind::OutOfRange << "camera.gain" << "4294967496 is beyond";
+        QTest::newRow("octal-looking integer") << QByteArray(withKey("camera", "  gain: 0100\n").c_str())
+                                               << ConfigIssueKind::OutOfRange << "camera.gain" << "leading zero";
+        QTest::newRow("octal-looking in a list") << QByteArray(withKey("hough", "  area_bounds: [ 070, 105, 236 ]\n").c_str())
+                                                 << ConfigIssueKind::OutOfRange << "hough.area_bounds" << "070";
+        QTest::newRow("900 KB of digits") << QByteArray(withKey("camera", "  gain: " + std::string(900 * 1024, '7') + "\n").c_str())
+                                          << ConfigIssueKind::OutOfRange << "camera.gain" << "is beyond the integer range";
+        // Found by fuzzing: OpenCV's reader throws std::length_error, not cv::Exception, on a key-less line.
+        QTest::newRow("key-less line") << QByteArray("schema: 1\nedges:\n   canny_low: 1\n   : 1\n")
+                                       << ConfigIssueKind::ParseError << "" << "malformed YAML";
+        // Issue 14, defect 1: input that would overflow the stack of OpenCV's recursive parser.
+        QTest::newRow("50000 nested brackets") << QByteArray(("schema: 1\nx: " + std::string(50000, '[') + "\n").c_str())
+                                               << ConfigIssueKind::ParseError << "" << "nested more than 64 levels";
+        std::string indented = "schema: 1\n";
+        for (int i = 0; i < 300; ++i) indented += std::string(std::size_t(i), ' ') + "k:\n";
+        QTest::newRow("300 nested sections") << QByteArray(indented.c_str()) << ConfigIssueKind::ParseError << ""
+                                             << "nested more than 64 levels";
+        std::string items = "schema: 1\nx:\n";
+        for (int i = 0; i < 20000; ++i) items += "- ";
+        QTest::newRow("20000 nested list items") << QByteArray((items + "1\n").c_str()) << ConfigIssueKind::ParseError << ""
+                                                 << "nested more than 64 levels";
         const std::string saved = serializeConfig(Config{});
+        QTest::newRow("larger than 1 MiB") << QByteArray((saved + "# " + std::string(1100 * 1024, 'x') + "\n").c_str())
+                                           << ConfigIssueKind::FileUnreadable << "" << "at most 1024 KiB";
         QTest::newRow("truncated saved file") << QByteArray(saved.substr(0, saved.size() * 2 / 3).c_str())
                                               << ConfigIssueKind::ParseError << "" << "";
     }
@@ -258,15 +345,23 @@ private slots:
         QVERIFY(maskFile.open(QIODevice::ReadOnly));
         const QByteArray maskBefore = maskFile.readAll();
         maskFile.close();
-        QVERIFY(QDir(dir.path()).mkdir("config.yml.tmp"));  // the config's temp file cannot be created
+        const std::string configBefore = readFile(path);
 
         cv::rectangle(c.mask, cv::Rect(0, 0, 100, 100), cv::Scalar(0), cv::FILLED);
-        const auto err = saveConfig(c, path.toStdString());
+        c.edges.cannyLow = 61;
+        std::optional<ConfigIssue> err;
+        {
+            const FileSizeLimit fullDisk(6 * 1024);  // the small mask fits, the ~10 KB config does not
+            err = saveConfig(c, path.toStdString());
+        }
         QVERIFY(err);
-        QVERIFY2(QString::fromStdString(err->toString()).contains("config.yml.tmp"), err->toString().c_str());
+        QCOMPARE(err->kind, ConfigIssueKind::WriteError);
+        QVERIFY2(QString::fromStdString(err->toString()).contains("config.yml"), err->toString().c_str());
+        QVERIFY2(QString::fromStdString(err->toString()).contains("File too large"), err->toString().c_str());
         QVERIFY(maskFile.open(QIODevice::ReadOnly));
         QCOMPARE(maskFile.readAll(), maskBefore);  // the new mask never replaced the old one
-        QVERIFY(!QFile::exists(dir.filePath("mask.png.tmp")));
+        QCOMPARE(readFile(path), configBefore);
+        QCOMPARE(tempFilesIn(dir.path()), QStringList());
     }
 
     void maskProblemsAreNamed_data()
@@ -292,6 +387,157 @@ private slots:
         const QString message = QString::fromStdString(load.error->toString());
         QVERIFY2(message.contains(says), qPrintable(message));
         QVERIFY2(message.contains("geometry.mask_file"), qPrintable(message));
+    }
+
+    // Issue 14, defect 8: the error names the line of the second occurrence / of the bad number.
+    void wrongValuesNameTheirLine_data()
+    {
+        QTest::addColumn<QByteArray>("text");
+        QTest::addColumn<int>("line");
+        QTest::newRow("duplicate key") << QByteArray("schema: 1\nedges:\n  canny_low: 50\n  canny_high: 190\n  canny_low: 70\n") << 5;
+        QTest::newRow("duplicate section") << QByteArray("schema: 1\ncamera:\n  gain: 5\nedges:\n  canny_low: 50\ncamera:\n  exposure: 9\n") << 6;
+        QTest::newRow("too large") << QByteArray("schema: 1\ncamera:\n  exposure: 9 # fine\n  gain: 4294967496\n") << 4;
+        QTest::newRow("octal") << QByteArray("schema: 1\n\ncamera:\n  gain: 0100\n") << 4;
+    }
+    void wrongValuesNameTheirLine()
+    {
+        QFETCH(QByteArray, text);
+        QFETCH(int, line);
+        const ConfigLoad load = parseConfig(text.toStdString(), "c.yml");
+        QVERIFY(!load.ok());
+        QVERIFY2(load.error->line == line, load.error->toString().c_str());
+    }
+
+    void ordinaryValuesAreNotMistakenForWrongOnes()
+    {
+        // Quoted text that looks like numbers or keys, negative and zero integers, hex, comments.
+        Config c;
+        c.camera.model = "0100 gain: 4294967496 [[[ {";
+        const std::string text = serializeConfig(c) + "# gain: 0100\n";
+        const ConfigLoad load = parseConfig(text, "c.yml");
+        QVERIFY2(load.ok(), load.error ? load.error->toString().c_str() : "");
+        QCOMPARE(load.config.camera.model, c.camera.model);
+        QVERIFY(parseConfig(withKey("ball", "  c0: 0\n  c1: -3\n  c2: 0.0100\n"), "c.yml").ok());
+    }
+
+    // Issue 13: saved numbers in the shortest form that reads back exactly.
+    void numbersAreWrittenShortest()
+    {
+        Config c;
+        c.ball.c1 = 0.3;
+        const std::string text = serializeConfig(c);
+        QVERIFY2(text.find("   c1: 0.3\n") != std::string::npos, text.c_str());
+        QVERIFY(text.find("e-01") == std::string::npos);
+        QVERIFY(text.find("9999999") == std::string::npos);
+        QVERIFY(text.find("   frame_rate: 30.0\n") != std::string::npos);  // a real stays a real
+    }
+
+    void everyKeyRoundTripsExactly()
+    {
+        for (const ConfigKey& k : configSchema()) {
+            bool tried = false;
+            for (const ConfigValue& value : otherValues(k, Config{})) {
+                Config c;
+                k.set(c, value);
+                if (!checkConfig(c).empty()) continue;  // e.g. above another key's value: try the next
+                tried = true;
+                const ConfigLoad load = parseConfig(serializeConfig(c), "c.yml");
+                QVERIFY2(load.ok(), (k.path + ": " + (load.error ? load.error->toString() : "")).c_str());
+                QVERIFY2(k.get(load.config) == value, (k.path + " came back as " + formatConfigValue(k.get(load.config))).c_str());
+                break;
+            }
+            QVERIFY2(tried, ("no valid changed value to try for " + k.path).c_str());
+        }
+    }
+
+    // Issue 14, defect 4: the backup is never a file being written, so a failing write (a full
+    // disk, a kill) cannot leave it empty or partial.
+    void backupIsNeverCutShort()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("config.yml");
+        const std::string original = serializeConfig(Config{}) + "# " + std::string(100 * 1024, 'n') + "\n";
+        writeFile(path, original);
+        Config c;
+        c.edges.cannyLow = 61;
+        std::optional<ConfigIssue> err;
+        {
+            const FileSizeLimit fullDisk(50 * 1024);  // the new config fits, a copy of the old one does not
+            err = saveConfig(c, path.toStdString());
+        }
+        QVERIFY2(!err, err ? err->toString().c_str() : "");
+        QVERIFY(readFile(path + ".bak") == original);
+        QCOMPARE(loadConfig(path.toStdString()).config.edges.cannyLow, 61);
+    }
+
+    // Issue 13, bug 6: the backup is the file before the first save, however many saves and
+    // program runs follow (each save here could be another run: the rule keeps no state).
+    void backupKeepsTheFileBeforeTheFirstSave()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("config.yml");
+        Config c;
+        c.edges.cannyLow = 40;
+        writeFile(path, serializeConfig(c));
+        const std::string original = readFile(path);
+        for (int save = 41; save <= 43; ++save) {
+            c.edges.cannyLow = save;
+            QVERIFY(!saveConfig(c, path.toStdString()));
+            QVERIFY(readFile(path + ".bak") == original);
+        }
+        QCOMPARE(loadConfig(path.toStdString()).config.edges.cannyLow, 43);
+        QVERIFY(QFile::remove(path + ".bak"));  // deleting it takes a fresh backup at the next save
+        const std::string third = readFile(path);
+        QVERIFY(!saveConfig(c, path.toStdString()));
+        QVERIFY(readFile(path + ".bak") == third);
+    }
+
+    // Issue 14, defect 5, within one process: saves of one file from two threads never share a
+    // temporary file and never turn the backup into a new version.
+    void concurrentSavesNeverMixFiles()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("config.yml");
+        writeFile(path, serializeConfig(Config{}));
+        const std::string original = readFile(path);
+        std::atomic<int> failures{0};
+        auto saver = [&](int low) {
+            Config c;
+            c.edges.cannyLow = low;
+            for (int i = 0; i < 40; ++i)
+                if (saveConfig(c, path.toStdString())) ++failures;
+        };
+        std::thread a(saver, 50), b(saver, 70);
+        a.join();
+        b.join();
+        QCOMPARE(failures.load(), 0);
+        QVERIFY(readFile(path + ".bak") == original);
+        const ConfigLoad load = loadConfig(path.toStdString());
+        QVERIFY(load.ok());
+        QVERIFY(load.config.edges.cannyLow == 50 || load.config.edges.cannyLow == 70);
+        QCOMPARE(tempFilesIn(dir.path()), QStringList());
+    }
+
+    // Issue 14, defect 5: a save that finds the folder locked by another save for too long
+    // refuses clearly and writes nothing. (A second lock in this process stands in for the
+    // other program: flock excludes separate opens of the folder alike.)
+    void aLockedFolderIsRefusedClearly()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("truth.csv");
+        writeFile(path, "old\n");
+        std::optional<std::string> err;
+        {
+            const FolderSaveLock otherProgram(path.toStdString());
+            QVERIFY(!otherProgram.error());
+            err = writeFileAtomically(path.toStdString(), "new\n");
+        }
+        QVERIFY(err);
+        QVERIFY2(QString::fromStdString(*err).contains("another program") && QString::fromStdString(*err).contains(dir.path()),
+                 err->c_str());
+        QCOMPARE(readFile(path), std::string("old\n"));
+        QVERIFY(!writeFileAtomically(path.toStdString(), "new\n"));  // free again
+        QCOMPARE(readFile(path), std::string("new\n"));
     }
 };
 

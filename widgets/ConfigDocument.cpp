@@ -1,6 +1,5 @@
 #include "widgets/ConfigDocument.h"
 
-#include "widgets/BackupOnce.h"
 #include "core/ConfigParser.h"
 #include "core/ConfigWriter.h"
 
@@ -107,18 +106,16 @@ std::optional<QString> ConfigDocument::load(const QString& path, QStringList* wa
 std::optional<QString> ConfigDocument::save()
 {
     if (path_.isEmpty()) return QStringLiteral("the config has no file yet: use Save As");
-    if (const auto err = saveConfig(config_, path_.toStdString(), !backedUpThisRun(path_)))
+    if (const auto err = saveConfig(config_, path_.toStdString()))
         return QString::fromStdString(err->toString());
-    rememberBackup(path_);
     markSaved();
     return std::nullopt;
 }
 
 std::optional<QString> ConfigDocument::saveAs(const QString& path)
 {
-    if (const auto err = saveConfig(config_, path.toStdString(), !backedUpThisRun(path)))
+    if (const auto err = saveConfig(config_, path.toStdString()))
         return QString::fromStdString(err->toString());
-    rememberBackup(path);
     if (path != path_) {
         path_ = path;
         emit pathChanged(path_);

@@ -1,7 +1,5 @@
 #include "widgets/TruthDocument.h"
 
-#include "widgets/BackupOnce.h"
-
 namespace omnitune {
 
 TruthDocument::TruthDocument(QObject* parent) : QObject(parent) {}
@@ -23,36 +21,40 @@ void TruthDocument::close(const QString& why)
     emit changed(-1);
 }
 
-// A reopened session keeps its first backup: only the first save of this run writes one.
-bool TruthDocument::keepBackup() const { return !backedUpThisRun(path()); }
+namespace {
 
-std::optional<QString> TruthDocument::saved(const std::optional<std::string>& err, bool wrote)
+// truth.csv.bak is the file as it was before OmniTune first saved it (core/AtomicFile.h): every
+// save asks for it, and the writer leaves an existing one alone.
+constexpr bool kKeepBackup = true;
+
+std::optional<QString> toQt(const std::optional<std::string>& err)
 {
     if (err) return QString::fromStdString(*err);
-    if (wrote) rememberBackup(path());
     return std::nullopt;
 }
+
+}  // namespace
 
 std::optional<QString> TruthDocument::set(const TruthRow& row)
 {
     bool changedRows = false;
-    const auto err = store_.set(row, keepBackup(), &changedRows);
+    const auto err = store_.set(row, kKeepBackup, &changedRows);
     if (changedRows) emit changed(row.frame);
-    return saved(err, changedRows);
+    return toQt(err);
 }
 
 std::optional<QString> TruthDocument::remove(int frame)
 {
     bool changedRows = false;
-    const auto err = store_.remove(frame, keepBackup(), &changedRows);
+    const auto err = store_.remove(frame, kKeepBackup, &changedRows);
     if (changedRows) emit changed(frame);
-    return saved(err, changedRows);
+    return toQt(err);
 }
 
 std::optional<QString> TruthDocument::save()
 {
     if (!isOpen()) return std::nullopt;
-    return saved(store_.save(keepBackup()), true);
+    return toQt(store_.save(kKeepBackup));
 }
 
 }  // namespace omnitune

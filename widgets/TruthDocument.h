@@ -1,7 +1,7 @@
 #pragma once
 // The open session's ground truth in the window: calib's TruthStore (rows, opening, atomic
 // saves) with Qt strings and a signal per change. The file as it was before this program
-// first changed it is kept as truth.csv.bak (BackupOnce).
+// first saved it is kept as truth.csv.bak (core/AtomicFile.h).
 #include "calib/session/TruthStore.h"
 
 #include <QObject>
@@ -41,9 +41,6 @@ signals:
     void changed(int frame);  // -1: everything (opened or closed)
 
 private:
-    bool keepBackup() const;
-    std::optional<QString> saved(const std::optional<std::string>& err, bool wrote);
-
     TruthStore store_;
 };
 

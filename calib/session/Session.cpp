@@ -15,15 +15,7 @@ namespace omnitune {
 
 namespace {
 
-std::string typeOf(const cv::FileNode& n)
-{
-    if (n.isInt()) return "an integer";
-    if (n.isReal()) return "a number";
-    if (n.isString()) return "text \"" + std::string(n) + "\"";
-    if (n.isSeq()) return "a list";
-    if (n.isMap()) return "a section";
-    return "nothing";
-}
+std::string typeOf(const cv::FileNode& n) { return yamlTypeOf(n); }
 
 std::string formatNumber(double v)
 {
@@ -32,36 +24,11 @@ std::string formatNumber(double v)
     return buf;
 }
 
-// "key:" at the start of `line` after any indentation.
-bool startsWithKey(const std::string& line, const std::string& key, bool indented)
-{
-    const std::size_t at = line.find_first_not_of(" \t");
-    if (at == std::string::npos || (at > 0 && !indented) || line.compare(at, key.size(), key) != 0) return false;
-    const std::size_t colon = line.find_first_not_of(" \t", at + key.size());
-    return colon != std::string::npos && line[colon] == ':';
-}
-
-// cv::FileNode does not know its line, so find "key:" in the text, inside `section` when
-// given. Good enough for messages; 0 when not found.
+// The config parser's helper (core/YamlText.h), in this file's words.
 int lineOfKey(const std::string& text, const std::string& section, const std::string& key)
 {
-    std::istringstream in(text);
-    int lineNo = 0;
-    bool inSection = section.empty();
-    for (std::string line; std::getline(in, line);) {
-        ++lineNo;
-        if (!section.empty()) {
-            const bool topLevel = !line.empty() && line[0] != ' ' && line[0] != '\t' && line[0] != '#';
-            if (topLevel) {
-                inSection = startsWithKey(line, section, false);
-                continue;
-            }
-        }
-        if (inSection && startsWithKey(line, key, !section.empty())) return lineNo;
-    }
-    return 0;
+    return yamlLineOfKey(text, section.empty() ? key : section + "." + key);
 }
-
 
 // Reads a node into the info, or returns why not (the info is left unchanged).
 using Reader = std::function<std::optional<SessionIssue>(const cv::FileNode&, SessionInfo&)>;

@@ -2,6 +2,7 @@
 
 #include "calib/session/SessionConfig.h"
 #include "calib/source/ImageFile.h"
+#include "core/RegularFile.h"
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -20,6 +21,7 @@ namespace {
 
 std::optional<std::string> readText(const fs::path& path)
 {
+    if (checkRegularFile(path.string())) return std::nullopt;  // a FIFO would block the reader for good
     std::ifstream in(path, std::ios::binary);
     if (!in) return std::nullopt;
     std::stringstream buffer;

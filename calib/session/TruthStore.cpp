@@ -1,5 +1,7 @@
 #include "calib/session/TruthStore.h"
 
+#include "core/RegularFile.h"
+
 #include "calib/session/Session.h"
 #include "core/ConfigWriter.h"
 
@@ -22,6 +24,10 @@ std::optional<std::string> TruthStore::open(const std::string& sessionDir, std::
     std::map<int, TruthRow> rows;
     std::error_code ec;
     if (std::filesystem::exists(path, ec)) {
+        if (const auto notRegular = checkRegularFile(path)) {  // a FIFO would block the window for good
+            close(path + ": " + *notRegular + "; ground truth cannot be marked");
+            return closedReason_;
+        }
         std::ifstream in(path, std::ios::binary);
         std::ostringstream text;
         if (!in || !(text << in.rdbuf())) {

@@ -1,17 +1,27 @@
 #pragma once
-// Reads one image file as BGR; an empty Mat when it is missing or does not decode (OpenCV
-// throws on some truncated files instead of returning empty: both mean "unreadable" here).
+// Reads one image file as BGR; an empty Mat when it is missing, not a regular file (a FIFO
+// would block the reader for good) or does not decode (OpenCV throws on some truncated files
+// instead of returning empty: all mean "unreadable" here). `why`, when given, gets the reason.
+#include "core/RegularFile.h"
+
 #include <opencv2/imgcodecs.hpp>
 
 #include <string>
 
 namespace omnitune {
 
-inline cv::Mat readImageFile(const std::string& path)
+inline cv::Mat readImageFile(const std::string& path, std::string* why = nullptr)
 {
+    if (const auto notRegular = checkRegularFile(path)) {
+        if (why) *why = *notRegular;
+        return {};
+    }
     try {
-        return cv::imread(path, cv::IMREAD_COLOR);
+        cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
+        if (image.empty() && why) *why = "does not decode as an image";
+        return image;
     } catch (const cv::Exception&) {
+        if (why) *why = "does not decode as an image";
         return {};
     }
 }
