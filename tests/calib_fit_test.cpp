@@ -70,6 +70,18 @@ std::vector<cv::Mat> mirrorFrames(cv::Size size, cv::Point2d c, double rim, doub
     return frames;
 }
 
+// Records the last percentage; asks to cancel once it has passed `cancelAt`.
+class RecordingProgress : public Progress {
+public:
+    explicit RecordingProgress(double cancelAt = 1000) : cancelAt_(cancelAt) {}
+    void update(double percent) override { last = percent; }
+    bool isCancelRequested() const override { return last >= cancelAt_; }
+    double last = -1;
+
+private:
+    double cancelAt_;
+};
+
 }  // namespace
 
 class CalibFitTest : public QObject {
@@ -311,6 +323,23 @@ private slots:
         const RimFitResult d = fitRim({cv::Mat(480, 640, CV_8UC3), cv::Mat(480, 480, CV_8UC3)});
         QCOMPARE(int(d.error->kind), int(FitErrorKind::BadInput));
         QVERIFY(d.error->message.find("480x480") != std::string::npos);
+    }
+
+    void progressAndCancel()
+    {
+        const auto frames = mirrorFrames({480, 480}, {240, 240}, 220, 45, 3);
+        RecordingProgress whole;
+        QVERIFY(fitRim(frames, {}, &whole).ok());
+        QCOMPARE(whole.last, 100.0);
+        RecordingProgress body;
+        QVERIFY(fitBody(frames, {240, 240}, 220, {}, &body).ok());
+        QCOMPARE(body.last, 100.0);
+        RecordingProgress stop(10);
+        const RimFitResult a = fitRim(frames, {}, &stop);
+        QVERIFY(!a.ok());
+        QCOMPARE(int(a.error->kind), int(FitErrorKind::Cancelled));
+        RecordingProgress stopBody(10);
+        QCOMPARE(int(fitBody(frames, {240, 240}, 220, {}, &stopBody).error->kind), int(FitErrorKind::Cancelled));
     }
 
     void bodyRefusesTooFewOrStillFrames()
