@@ -291,8 +291,10 @@ private slots:
         QVERIFY2(result.ok(), result.ok() ? "" : result.error->message.c_str());
         const RimFit& f = result.fit;
         const QString got = QString("centre (%1, %2) rim %3 rms %4").arg(f.centre.x).arg(f.centre.y).arg(f.rimRadius).arg(f.rmsPx);
-        QVERIFY2(std::hypot(f.centre.x - centre.x, f.centre.y - centre.y) < 1.0, qPrintable(got));
-        QVERIFY2(std::abs(f.rimRadius - rim) < 1.0, qPrintable(got));
+        // Issue 11 asks for 1 px; the sub-pixel edge gives ~0.03 px, so a quarter pixel keeps
+        // a whole-pixel edge location from passing.
+        QVERIFY2(std::hypot(f.centre.x - centre.x, f.centre.y - centre.y) < 0.25, qPrintable(got));
+        QVERIFY2(std::abs(f.rimRadius - rim) < 0.25, qPrintable(got));
         QCOMPARE(f.outerRadius, f.rimRadius - RimFitOptions{}.marginPx);
         QVERIFY(f.inliers < int(f.points.size()));  // the obstacle's rays were dropped
         // One frame is enough for the rim.
