@@ -9,6 +9,7 @@
 #include "calib/fit/Polynomial.h"
 #include "calib/fit/RimFit.h"
 #include "calib/session/SessionReader.h"
+#include "calib/sim/SceneSimulator.h"
 #include "core/ConfigParser.h"
 
 #include <opencv2/imgproc.hpp>
@@ -304,6 +305,59 @@ private slots:
         QVERIFY2(body.ok(), body.ok() ? "" : body.error->message.c_str());
         QVERIFY2(std::abs(body.fit.bodyRadius - 47.0) < 1.0, qPrintable(QString("body %1").arg(body.fit.bodyRadius)));
         QCOMPARE(body.fit.innerRadius, body.fit.bodyRadius + BodyFitOptions{}.marginPx);
+    }
+
+    // The scene simulator's cameras: off-centre mirrors, three frame sizes, dim light with
+    // vignetting (the thin grey mirror ring then looks brighter than the carpet beside it),
+    // other robots at the rim. The simulator draws the mirror's edge 6 px beyond outer_radius
+    // and the robot body 2 px inside inner_radius.
+    void rimOnSimulatedCameras_data()
+    {
+        QTest::addColumn<cv::Size>("size");
+        QTest::addColumn<cv::Point2d>("centre");
+        QTest::addColumn<double>("outer");
+        QTest::addColumn<double>("inner");
+        QTest::addColumn<double>("light");
+        QTest::newRow("480x480 dim, vignetting") << cv::Size(480, 480) << cv::Point2d(236.7, 231.4) << 220.0 << 42.0 << 0.45;
+        QTest::newRow("505x480 normal") << cv::Size(505, 480) << cv::Point2d(250.2, 242.6) << 225.0 << 55.0 << 1.0;
+        QTest::newRow("640x480 bright, cut") << cv::Size(640, 480) << cv::Point2d(331.5, 236.2) << 250.0 << 48.0 << 1.3;
+    }
+
+    void rimOnSimulatedCameras()
+    {
+        QFETCH(cv::Size, size);
+        QFETCH(cv::Point2d, centre);
+        QFETCH(double, outer);
+        QFETCH(double, inner);
+        QFETCH(double, light);
+        Config config;
+        config.geometry.imageWidth = size.width;
+        config.geometry.imageHeight = size.height;
+        config.geometry.centerX = centre.x;
+        config.geometry.centerY = centre.y;
+        config.geometry.outerRadius = outer;
+        config.geometry.innerRadius = inner;
+        const SceneSimulator sim(config);
+        std::vector<cv::Mat> frames;
+        for (int i = 0; i < 6; ++i) {
+            SceneOptions scene;
+            scene.robot = {-2.0 + 0.7 * i, -1.0 + 0.3 * i, 0.4 + 0.5 * i};  // drives and turns
+            scene.obstacles = {{scene.robot.x + 1.5, scene.robot.y + 2.5}};
+            scene.lightLevel = light;
+            scene.lightGradient = light < 1 ? 1.0 : 0.0;
+            scene.noiseSigma = 3.0;
+            scene.seed = 20u + unsigned(i);
+            frames.push_back(sim.render(scene));
+        }
+        const RimFitResult rim = fitRim(frames);
+        QVERIFY2(rim.ok(), rim.ok() ? "" : rim.error->message.c_str());
+        const QString got = QString("centre (%1, %2) rim %3 outer %4").arg(rim.fit.centre.x).arg(rim.fit.centre.y).arg(rim.fit.rimRadius).arg(rim.fit.outerRadius);
+        QVERIFY2(std::hypot(rim.fit.centre.x - centre.x, rim.fit.centre.y - centre.y) < 0.5, qPrintable(got));
+        // Inside the mirror image, and not much inside the ring the config was drawn with.
+        QVERIFY2(rim.fit.outerRadius > outer - 1 && rim.fit.outerRadius < outer + 6, qPrintable(got));
+        const BodyFitResult body = fitBody(frames, rim.fit.centre, rim.fit.rimRadius);
+        QVERIFY2(body.ok(), body.ok() ? "" : body.error->message.c_str());
+        QVERIFY2(std::abs(body.fit.innerRadius - inner) < 2.0, qPrintable(QString("inner %1").arg(body.fit.innerRadius)));
     }
 
     void rimRefusesFramesWithoutRim()
