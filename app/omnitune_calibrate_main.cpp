@@ -34,6 +34,8 @@ const std::vector<OptionSpec> kOptions = {
     {"no-body", false, false, "      rim: keep the config's inner radius (fit the rim from one frame)"},
     {"points", true, false, "FILE  distance-map: CSV radius_px,distance_m or x,y,distance_m"},
     {"degree", true, false, "N     distance-map: polynomial degree 1..6 (default 3)"},
+    {"viewpoint-height", true, false, "M     distance-map: height of the mirror's viewpoint above the floor, for the\n"
+                                      "                    ball-height correction (default: keep the config's)"},
     {"help", false, false, "      this text"},
 };
 
@@ -152,6 +154,12 @@ int runRim(const CommandLine& cl, const std::string& out)
 
     applyRimFit(r, size, config->geometry);
     if (body) config->geometry.innerRadius = body->innerRadius;
+    const auto& sensors = config->sensors;
+    // A pixel either way is no fault worth a note; a sensor ray into the housing is.
+    if (sensors.innerRadius < config->geometry.innerRadius - 1 || sensors.outerRadius > config->geometry.outerRadius + 1)
+        std::cerr << "note: the radial sensors run from " << fixedText(sensors.innerRadius) << " to "
+                  << fixedText(sensors.outerRadius) << " px, outside the new ring; set sensors.inner_radius and "
+                  << "outer_radius to match\n";
     return save(*config, out);
 }
 
@@ -163,6 +171,11 @@ int runDistanceMap(const CommandLine& cl, const std::string& out)
         const auto v = parseInt(*d);
         if (!v || *v < 1 || *v > 6) return fail("--degree must be 1..6, not '" + *d + "'");
         options.degree = *v;
+    }
+    std::optional<double> height;
+    if (auto h = cl.value("viewpoint-height")) {
+        height = parseDouble(*h);
+        if (!height || *height <= 0) return fail("--viewpoint-height must be a positive number of metres, not '" + *h + "'");
     }
     const CalibrationPointsParse parse = loadCalibrationPoints(*cl.value("points"));
     for (const auto& w : parse.warnings) std::cerr << "warning: " << w.toString() << "\n";
@@ -186,6 +199,10 @@ int runDistanceMap(const CommandLine& cl, const std::string& out)
     std::cout << "  written as a table of " << f.tableRadiiPx.size() << " radii (within "
               << fixedText(f.tableDeviationCm, 2) << " cm of the fit)\n";
     applyDistanceMapFit(f, config->distanceMap);
+    if (height) config->distanceMap.viewpointHeight = *height;
+    std::cout << "  viewpoint height " << fixedText(config->distanceMap.viewpointHeight, 3) << " m"
+              << (height ? "" : " (kept; --viewpoint-height sets it)") << ": a ball seen at radius r lies at "
+              << "distance(r) * (height - ball radius) / height\n";
     return save(*config, out);
 }
 

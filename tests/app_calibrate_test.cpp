@@ -80,6 +80,8 @@ private slots:
         QTest::newRow("rim without input") << QStringList{"rim", "--out", "x.yml"} << "rim needs --input";
         QTest::newRow("bad --frames") << QStringList{"rim", "--input", kDemo, "--out", "x.yml", "--frames", "0"} << "--frames must be";
         QTest::newRow("missing input") << QStringList{"rim", "--input", "/nonexistent/s", "--out", "x.yml"} << "/nonexistent/s";
+        QTest::newRow("bad height") << QStringList{"distance-map", "--points", "p.csv", "--out", "x.yml", "--viewpoint-height", "-1"}
+                                    << "--viewpoint-height must be a positive number";
         QTest::newRow("no points") << QStringList{"distance-map", "--out", "x.yml"} << "needs --points";
         QTest::newRow("missing points file") << QStringList{"distance-map", "--points", "/nonexistent/p.csv", "--out", "x.yml"}
                                              << "/nonexistent/p.csv: cannot be read";
@@ -149,7 +151,8 @@ private slots:
             csv += QByteArray::number(r) + "," + QByteArray::number(0.004 * r + 2.2e-7 * r * r * r, 'f', 4) + "\n";
         writeText(points, csv);
         const QString out = dir.filePath("out.yml");
-        const Run r = calibrate({"distance-map", "--config", kDemo + "/config.yml", "--points", points, "--out", out});
+        const Run r = calibrate({"distance-map", "--config", kDemo + "/config.yml", "--points", points, "--out", out,
+                                 "--viewpoint-height", "0.62"});
         QVERIFY2(r.cleanExit && r.exitCode == 0, qPrintable(r.describe()));
         QVERIFY2(r.out.contains("residual RMS 0.0"), qPrintable(r.out));  // exact cubic: under a tenth of a cm
         const omnitune::ConfigLoad load = omnitune::loadConfig(out.toStdString());
@@ -157,6 +160,7 @@ private slots:
         const omnitune::DistanceMap map(load.config.distanceMap);
         QVERIFY(std::abs(map.toGround(150) - (0.6 + 2.2e-7 * 150 * 150 * 150)) < 0.005);
         QCOMPARE(int(load.config.distanceMap.pixelRadii.size()), 16);
+        QCOMPARE(load.config.distanceMap.viewpointHeight, 0.62);
     }
 
     void distanceMapRefusals_data()
