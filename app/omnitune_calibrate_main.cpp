@@ -6,6 +6,7 @@
 #include "app/StderrProgress.h"
 #include "app/ToolConfig.h"
 #include "calib/fit/BallModelFit.h"
+#include "calib/fit/BallSamplesCsv.h"
 #include "calib/fit/BodyFit.h"
 #include "calib/fit/CalibrationPointsCsv.h"
 #include "calib/fit/DistanceMapFit.h"
@@ -36,6 +37,8 @@ const std::vector<OptionSpec> kOptions = {
     {"degree", true, false, "N     distance-map: polynomial degree 1..6 (default 3)"},
     {"viewpoint-height", true, false, "M     distance-map: height of the mirror's viewpoint above the floor, for the\n"
                                       "                    ball-height correction (default: keep the config's)"},
+    {"samples", true, false, "FILE  ball-model: CSV distance_px,radius_px or distance_m,radius_px instead of\n"
+                             "                    the session's truth marks"},
     {"help", false, false, "      this text"},
 };
 
@@ -44,7 +47,7 @@ const char* const kSummary =
     "subcommands:\n"
     "  rim            mirror centre, outer radius (from the rim) and inner radius (from the robot body)\n"
     "  distance-map   image radius -> ground distance from --points\n"
-    "  ball-model     expected ball radius r(d) from the truth marks of the --input session";
+    "  ball-model     expected ball radius r(d) from the truth marks of the --input session or --samples";
 
 int fail(const std::string& why)
 {
@@ -206,35 +209,71 @@ int runDistanceMap(const CommandLine& cl, const std::string& out)
     return save(*config, out);
 }
 
+// The samples: a --samples file, else the visible balls of the --input session's truth.csv.
+struct BallInput {
+    std::vector<BallSample> samples;
+    std::string from;  // "24 marked balls in sessions/demo"
+};
+
+std::optional<BallInput> ballSamplesFromSession(const std::string& input, const Config& config, std::string& error)
+{
+    SessionOpen opened = SessionReader::open(input);
+    if (!opened.ok()) {
+        error = opened.error->toString() + " (ball-model reads the truth marks of a session, or give --samples)";
+        return std::nullopt;
+    }
+    for (const auto& w : opened.reader->warnings()) std::cerr << "warning: " << w.toString() << "\n";
+    const cv::Size size = opened.reader->frameSize();
+    const cv::Size geometrySize(config.geometry.imageWidth, config.geometry.imageHeight);
+    if (size != geometrySize) {
+        error = "the config's geometry is for " + sizeText(geometrySize) + " frames but " + input + " holds " +
+                sizeText(size) + " frames: run 'omnitune-calibrate rim' on it first";
+        return std::nullopt;
+    }
+    const cv::Point2d centre(config.geometry.centerX, config.geometry.centerY);
+    BallInput in{ballSamplesFromTruth(opened.reader->truth(), centre), ""};
+    in.from = std::to_string(in.samples.size()) + " marked balls in " + input + ", measured from the centre " +
+              pointText(centre);
+    return in;
+}
+
 int runBallModel(const CommandLine& cl, const std::string& out)
 {
-    if (!cl.has("input")) return fail("ball-model needs --input SESSION with truth.csv (see --help)");
-    const std::string input = *cl.value("input");
-    SessionOpen opened = SessionReader::open(input);
-    if (!opened.ok()) return fail(opened.error->toString() + " (ball-model reads the truth marks of a session)");
-    for (const auto& w : opened.reader->warnings()) std::cerr << "warning: " << w.toString() << "\n";
+    const auto samplesPath = cl.value("samples");
+    if (!samplesPath && !cl.has("input"))
+        return fail("ball-model needs --input SESSION with truth.csv, or --samples SAMPLES.csv (see --help)");
+    std::optional<BallSamplesParse> file;
+    if (samplesPath) {
+        file = loadBallSamples(*samplesPath);
+        for (const auto& w : file->warnings) std::cerr << "warning: " << w.toString() << "\n";
+        if (!file->ok()) return fail(file->error->toString());
+    }
     std::string error;
-    auto config = startingConfig(cl, false, "ball-model measures the marks from the mirror centre", error);
+    auto config = startingConfig(cl, file && !file->needsDistanceMap(),
+                                 file ? *samplesPath + " gives ground distances: they need the config's distance map"
+                                      : "ball-model measures the marks from the mirror centre",
+                                 error);
     if (!config) return fail(error);
-    const cv::Size size = opened.reader->frameSize();
-    const cv::Size geometrySize(config->geometry.imageWidth, config->geometry.imageHeight);
-    if (size != geometrySize)
-        return fail("the config's geometry is for " + sizeText(geometrySize) + " frames but " + input + " holds " +
-                    sizeText(size) + " frames: run 'omnitune-calibrate rim' on it first");
+    std::optional<BallInput> in;
+    if (file) {
+        in = BallInput{toBallSamples(file->rows, DistanceMap(config->distanceMap)), ""};
+        in->from = std::to_string(in->samples.size()) + " samples from " + *samplesPath;
+    } else {
+        in = ballSamplesFromSession(*cl.value("input"), *config, error);
+        if (!in) return fail(error);
+    }
 
-    const cv::Point2d centre(config->geometry.centerX, config->geometry.centerY);
-    const std::vector<BallSample> samples = ballSamplesFromTruth(opened.reader->truth(), centre);
-    const BallModelFitResult result = fitBallModel(samples);
+    const BallModelFitResult result = fitBallModel(in->samples);
     if (!result.ok()) return fail(result.error->toString());
     const BallModelFit& f = result.fit;
-    const BallSample& worst = samples[std::size_t(f.worstSample)];
-    std::cout << "ball-model: " << samples.size() << " marked balls in " << input << ", " << fixedText(f.minDistancePx)
-              << ".." << fixedText(f.maxDistancePx) << " px from the centre " << pointText(centre) << "\n"
+    const BallSample& worst = in->samples[std::size_t(f.worstSample)];
+    std::cout << "ball-model: " << in->from << "; " << fixedText(f.minDistancePx) << ".." << fixedText(f.maxDistancePx)
+              << " px out\n"
               << "  r(d) = " << ballCurveText(f.c0, f.c1, f.c2) << " px  (was "
               << ballCurveText(config->ball.c0, config->ball.c1, config->ball.c2) << ")\n"
-              << "  residual RMS " << fixedText(f.rmsPx, 2) << " px, largest " << fixedText(f.maxAbsPx, 2)
-              << " px (frame " << worst.frame << ", " << fixedText(worst.distancePx) << " px out, radius "
-              << fixedText(worst.radiusPx, 2) << " px)\n";
+              << "  residual RMS " << fixedText(f.rmsPx, 2) << " px, largest " << fixedText(f.maxAbsPx, 2) << " px ("
+              << (worst.frame >= 0 ? "frame " + std::to_string(worst.frame) + ", " : std::string())
+              << fixedText(worst.distancePx) << " px out, radius " << fixedText(worst.radiusPx, 2) << " px)\n";
     applyBallModelFit(f, config->ball);
     return save(*config, out);
 }

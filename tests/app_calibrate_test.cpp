@@ -133,6 +133,36 @@ private slots:
         for (double d = 80; d <= 220; d += 20) QVERIFY(std::abs(fitted.radiusAt(d) - original.radiusAt(d)) < 0.3);
     }
 
+    // A ball laid out at measured ground distances, its radius read off the image: the
+    // distances go through the config's distance map.
+    void ballModelFromSamplesFile()
+    {
+        QTemporaryDir dir;
+        const omnitune::ConfigLoad demo = omnitune::loadConfig((kDemo + "/config.yml").toStdString());
+        QVERIFY(demo.ok());
+        const omnitune::DistanceMap map(demo.config.distanceMap);
+        const omnitune::BallModel truth(demo.config.ball);
+        QByteArray csv = "distance_m,radius_px\n";
+        for (int i = 0; i < 12; ++i) {
+            const double m = 0.8 + 0.2 * i;
+            csv += QByteArray::number(m) + "," + QByteArray::number(truth.radiusAt(map.ballPixels(m)), 'f', 4) + "\n";
+        }
+        writeText(dir.filePath("s.csv"), csv);
+        const QString out = dir.filePath("out.yml");
+        const Run r = calibrate({"ball-model", "--samples", dir.filePath("s.csv"), "--config", kDemo + "/config.yml", "--out", out});
+        QVERIFY2(r.cleanExit && r.exitCode == 0, qPrintable(r.describe()));
+        QVERIFY2(r.out.contains("12 samples from"), qPrintable(r.out));
+        const omnitune::ConfigLoad load = omnitune::loadConfig(out.toStdString());
+        QVERIFY(load.ok());
+        const omnitune::BallModel fitted(load.config.ball);
+        for (double d = 115; d <= 195; d += 10) QVERIFY(std::abs(fitted.radiusAt(d) - truth.radiusAt(d)) < 0.05);
+
+        // Without a config the ground distances have no map to go through.
+        const Run refused = calibrate({"ball-model", "--samples", dir.filePath("s.csv"), "--out", out});
+        QVERIFY2(refused.cleanExit && refused.exitCode == 1, qPrintable(refused.describe()));
+        QVERIFY2(refused.err.contains("need the config's distance map"), qPrintable(refused.describe()));
+    }
+
     void ballModelNeedsSessionAndCentre()
     {
         QTemporaryDir dir;

@@ -2,6 +2,7 @@
 // data drawn here with a seeded RNG, refuses what it cannot fit with the right kind, and on the
 // demo session recovers the geometry and ball model its config.yml was rendered with.
 #include "calib/fit/BallModelFit.h"
+#include "calib/fit/BallSamplesCsv.h"
 #include "calib/fit/BodyFit.h"
 #include "calib/fit/CalibrationPointsCsv.h"
 #include "calib/fit/CircleFit.h"
@@ -186,17 +187,17 @@ private slots:
         QCOMPARE(a.points[1].radiusPx, 150.0);
         QVERIFY(!a.needsCentre());
         QCOMPARE(int(a.warnings.size()), 3);
-        QCOMPARE(int(a.warnings[0].kind), int(PointsIssueKind::WrongColumnCount));
+        QCOMPARE(int(a.warnings[0].kind), int(CsvIssueKind::WrongColumnCount));
         QCOMPARE(a.warnings[0].toString(), std::string("p.csv:5: 3 cells where the header has 2; row skipped"));
-        QCOMPARE(int(a.warnings[1].kind), int(PointsIssueKind::BadNumber));
+        QCOMPARE(int(a.warnings[1].kind), int(CsvIssueKind::BadNumber));
         QCOMPARE(a.warnings[1].line, 6);
-        QCOMPARE(int(a.warnings[2].kind), int(PointsIssueKind::BadValue));
+        QCOMPARE(int(a.warnings[2].kind), int(CsvIssueKind::BadValue));
 
         const CalibrationPointsParse b = parseCalibrationPoints("distance_m,x,y,note\n1.5,420,240,a\n2,320,40,b\n", "q.csv");
         QVERIFY(b.ok());
         QVERIFY(b.needsCentre());
         QCOMPARE(int(b.warnings.size()), 1);
-        QCOMPARE(int(b.warnings[0].kind), int(PointsIssueKind::UnknownColumn));
+        QCOMPARE(int(b.warnings[0].kind), int(CsvIssueKind::UnknownColumn));
         const auto pts = toDistancePoints(b.points, {320, 240});
         QCOMPARE(pts[0].radiusPx, 100.0);
         QCOMPARE(pts[1].radiusPx, 200.0);
@@ -204,7 +205,7 @@ private slots:
 
         const CalibrationPointsParse c = parseCalibrationPoints("60,0.3\n90,0.6\n", "r.csv");
         QVERIFY(!c.ok());
-        QCOMPARE(int(c.error->kind), int(PointsIssueKind::MissingColumn));
+        QCOMPARE(int(c.error->kind), int(CsvIssueKind::MissingColumn));
         QCOMPARE(c.error->line, 1);
         QVERIFY(c.warnings.empty());  // no "unknown column '60'" for a missing header
         QVERIFY(!loadCalibrationPoints("/nonexistent/points.csv").ok());
@@ -246,6 +247,33 @@ private slots:
         QVERIFY(!b.ok());
         QCOMPARE(int(b.error->kind), int(FitErrorKind::NarrowSpan));
         QVERIFY(b.error->message.find("near the robot and far away") != std::string::npos);
+    }
+
+    void ballSamplesCsvParses()
+    {
+        const BallSamplesParse a = parseBallSamples("radius_px,distance_px\n12.5,100\n+9,150.5\n7;200\n3,-1\n", "s.csv");
+        QVERIFY(a.ok());
+        QVERIFY(!a.needsDistanceMap());
+        QCOMPARE(int(a.rows.size()), 2);
+        QCOMPARE(a.rows[1].distance, 150.5);
+        QCOMPARE(a.rows[1].radiusPx, 9.0);
+        QCOMPARE(int(a.warnings.size()), 2);
+        QCOMPARE(a.warnings[0].toString(), std::string("s.csv:4: 1 cells where the header has 2; row skipped"));
+        QCOMPARE(int(a.warnings[1].kind), int(CsvIssueKind::BadValue));
+
+        // Ground distances go through the distance map, ball-height corrected.
+        const BallSamplesParse b = parseBallSamples("# ball laid out at measured distances\ndistance_m,radius_px\n1.0,14\n", "m.csv");
+        QVERIFY(b.ok());
+        QVERIFY(b.needsDistanceMap());
+        const DistanceMap map{DistanceMapOptions{}};
+        const auto samples = toBallSamples(b.rows, map);
+        QCOMPARE(samples[0].distancePx, map.ballPixels(1.0));
+        QCOMPARE(samples[0].radiusPx, 14.0);
+
+        const BallSamplesParse c = parseBallSamples("distance,radius\n1,2\n", "x.csv");
+        QVERIFY(!c.ok());
+        QCOMPARE(int(c.error->kind), int(CsvIssueKind::MissingColumn));
+        QVERIFY(!loadBallSamples("/nonexistent/s.csv").ok());
     }
 
     void ballSamplesFromTruthRows()
