@@ -32,13 +32,7 @@ BallSamplesParse parseBallSamples(const std::string& text, const std::string& fi
 
 BallSamplesParse loadBallSamples(const std::string& path)
 {
-    const auto text = readTextFile(path);
-    if (!text) {
-        BallSamplesParse parse;
-        parse.error = CsvIssue{CsvIssueKind::FileUnreadable, path, 0, "cannot be read"};
-        return parse;
-    }
-    return parseBallSamples(*text, path);
+    return loadCsvFile<BallSamplesParse>(path, parseBallSamples);
 }
 
 std::vector<BallSample> toBallSamples(const std::vector<BallSampleRow>& rows, const DistanceMap& map)

@@ -47,13 +47,7 @@ CalibrationPointsParse parseCalibrationPoints(const std::string& text, const std
 
 CalibrationPointsParse loadCalibrationPoints(const std::string& path)
 {
-    const auto text = readTextFile(path);
-    if (!text) {
-        CalibrationPointsParse parse;
-        parse.error = CsvIssue{CsvIssueKind::FileUnreadable, path, 0, "cannot be read"};
-        return parse;
-    }
-    return parseCalibrationPoints(*text, path);
+    return loadCsvFile<CalibrationPointsParse>(path, parseCalibrationPoints);
 }
 
 std::vector<DistancePoint> toDistancePoints(const std::vector<CalibrationPoint>& points, cv::Point2d centre)

@@ -55,4 +55,18 @@ NumberCsv parseNumberCsv(const std::string& text, const std::string& fileName, c
 // The file's text, or nothing when it cannot be read.
 std::optional<std::string> readTextFile(const std::string& path);
 
+// Reads `path` and hands its text to `parse(text, path)`; an unreadable file is the result's
+// error (a FileUnreadable CsvIssue).
+template <class Parse, class ParseText>
+Parse loadCsvFile(const std::string& path, ParseText parse)
+{
+    const auto text = readTextFile(path);
+    if (!text) {
+        Parse result;
+        result.error = CsvIssue{CsvIssueKind::FileUnreadable, path, 0, "cannot be read"};
+        return result;
+    }
+    return parse(*text, path);
+}
+
 }  // namespace omnitune
