@@ -28,17 +28,17 @@ namespace {
 const std::vector<OptionSpec> kOptions = {
     {"input", true, false, "PATH  session, video, image folder or glob ('dir/*.png'); rim and ball-model"},
     {"config", true, false, "FILE  the config to start from (default: the session's config.yml; rim and\n"
-                            "                    distance-map with radius_px points fall back to the defaults)"},
+                            "                          distance-map with radius_px points fall back to the defaults)"},
     {"out", true, false, "FILE  where the updated config goes (an existing file is kept as FILE.bak)"},
     {"frames", true, false, "N     rim: frames used, spread over the input (default 8)"},
     {"margin", true, false, "PX    rim: outer radius this far inside the found rim (default 4)"},
     {"no-body", false, false, "      rim: keep the config's inner radius (fit the rim from one frame)"},
     {"points", true, false, "FILE  distance-map: CSV radius_px,distance_m or x,y,distance_m"},
     {"degree", true, false, "N     distance-map: polynomial degree 1..6 (default 3)"},
-    {"viewpoint-height", true, false, "M     distance-map: height of the mirror's viewpoint above the floor, for the\n"
-                                      "                    ball-height correction (default: keep the config's)"},
+    {"height", true, false, "M     distance-map: height of the mirror's viewpoint above the floor, for the\n"
+                                      "                          ball-height correction (default: keep the config's)"},
     {"samples", true, false, "FILE  ball-model: CSV distance_px,radius_px or distance_m,radius_px instead of\n"
-                             "                    the session's truth marks"},
+                             "                          the session's truth marks"},
     {"help", false, false, "      this text"},
 };
 
@@ -176,9 +176,9 @@ int runDistanceMap(const CommandLine& cl, const std::string& out)
         options.degree = *v;
     }
     std::optional<double> height;
-    if (auto h = cl.value("viewpoint-height")) {
+    if (auto h = cl.value("height")) {
         height = parseDouble(*h);
-        if (!height || *height <= 0) return fail("--viewpoint-height must be a positive number of metres, not '" + *h + "'");
+        if (!height || *height <= 0) return fail("--height must be a positive number of metres, not '" + *h + "'");
     }
     const CalibrationPointsParse parse = loadCalibrationPoints(*cl.value("points"));
     for (const auto& w : parse.warnings) std::cerr << "warning: " << w.toString() << "\n";
@@ -204,7 +204,7 @@ int runDistanceMap(const CommandLine& cl, const std::string& out)
     applyDistanceMapFit(f, config->distanceMap);
     if (height) config->distanceMap.viewpointHeight = *height;
     std::cout << "  viewpoint height " << fixedText(config->distanceMap.viewpointHeight, 3) << " m"
-              << (height ? "" : " (kept; --viewpoint-height sets it)") << ": a ball seen at radius r lies at "
+              << (height ? "" : " (kept; --height sets it)") << ": a ball seen at radius r lies at "
               << "distance(r) * (height - ball radius) / height\n";
     return save(*config, out);
 }

@@ -80,8 +80,8 @@ private slots:
         QTest::newRow("rim without input") << QStringList{"rim", "--out", "x.yml"} << "rim needs --input";
         QTest::newRow("bad --frames") << QStringList{"rim", "--input", kDemo, "--out", "x.yml", "--frames", "0"} << "--frames must be";
         QTest::newRow("missing input") << QStringList{"rim", "--input", "/nonexistent/s", "--out", "x.yml"} << "/nonexistent/s";
-        QTest::newRow("bad height") << QStringList{"distance-map", "--points", "p.csv", "--out", "x.yml", "--viewpoint-height", "-1"}
-                                    << "--viewpoint-height must be a positive number";
+        QTest::newRow("bad height") << QStringList{"distance-map", "--points", "p.csv", "--out", "x.yml", "--height", "-1"}
+                                    << "--height must be a positive number";
         QTest::newRow("no points") << QStringList{"distance-map", "--out", "x.yml"} << "needs --points";
         QTest::newRow("missing points file") << QStringList{"distance-map", "--points", "/nonexistent/p.csv", "--out", "x.yml"}
                                              << "/nonexistent/p.csv: cannot be read";
@@ -182,7 +182,7 @@ private slots:
         writeText(points, csv);
         const QString out = dir.filePath("out.yml");
         const Run r = calibrate({"distance-map", "--config", kDemo + "/config.yml", "--points", points, "--out", out,
-                                 "--viewpoint-height", "0.62"});
+                                 "--height", "0.62"});
         QVERIFY2(r.cleanExit && r.exitCode == 0, qPrintable(r.describe()));
         QVERIFY2(r.out.contains("residual RMS 0.0"), qPrintable(r.out));  // exact cubic: under a tenth of a cm
         const omnitune::ConfigLoad load = omnitune::loadConfig(out.toStdString());
