@@ -1,0 +1,306 @@
+// omnitune-calibrate: the window's geometry fits on the command line (calib/fit/). Each
+// subcommand reads a config, fits one part of it, prints what it fitted with its residuals and
+// writes the updated config atomically (the previous OUT kept as OUT.bak). When a fit cannot be
+// made it exits non-zero with a one-line reason and writes nothing.
+#include "app/CommandLine.h"
+#include "app/StderrProgress.h"
+#include "app/ToolConfig.h"
+#include "calib/fit/BallModelFit.h"
+#include "calib/fit/BallSamplesCsv.h"
+#include "calib/fit/BodyFit.h"
+#include "calib/fit/CalibrationPointsCsv.h"
+#include "calib/fit/DistanceMapFit.h"
+#include "calib/fit/FitFrames.h"
+#include "calib/fit/FitText.h"
+#include "calib/fit/RimFit.h"
+#include "calib/session/Session.h"
+#include "calib/session/SessionReader.h"
+#include "calib/source/FrameSourceFactory.h"
+#include "core/ConfigWriter.h"
+
+#include <filesystem>
+#include <iostream>
+
+using namespace omnitune;
+
+namespace {
+
+const std::vector<OptionSpec> kOptions = {
+    {"input", true, false, "PATH  session, video, image folder or glob ('dir/*.png'); rim and ball-model"},
+    {"config", true, false, "FILE  the config to start from (default: the session's config.yml; rim and\n"
+                            "                          distance-map with radius_px points fall back to the defaults)"},
+    {"out", true, false, "FILE  where the updated config goes (an existing file is kept as FILE.bak)"},
+    {"frames", true, false, "N     rim: frames used, spread over the input (default 8)"},
+    {"margin", true, false, "PX    rim: outer radius this far inside the found rim (default 4)"},
+    {"no-body", false, false, "      rim: keep the config's inner radius (fit the rim from one frame)"},
+    {"points", true, false, "FILE  distance-map: CSV radius_px,distance_m or x,y,distance_m"},
+    {"degree", true, false, "N     distance-map: polynomial degree 1..6 (default 3)"},
+    {"height", true, false, "M     distance-map: height of the mirror's viewpoint above the floor, for the\n"
+                                      "                          ball-height correction (default: keep the config's)"},
+    {"samples", true, false, "FILE  ball-model: CSV distance_px,radius_px or distance_m,radius_px instead of\n"
+                             "                          the session's truth marks"},
+    {"help", false, false, "      this text"},
+};
+
+const char* const kSummary =
+    "Fits the camera geometry and writes it into a config.\n"
+    "subcommands:\n"
+    "  rim            mirror centre, outer radius (from the rim) and inner radius (from the robot body)\n"
+    "  distance-map   image radius -> ground distance from --points\n"
+    "  ball-model     expected ball radius r(d) from the truth marks of the --input session or --samples";
+
+int fail(const std::string& why)
+{
+    std::cerr << "omnitune-calibrate: " << why << "\n";
+    return 1;
+}
+
+std::string sizeText(cv::Size s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }
+
+// The config to start from: --config, else the input's config.yml, else (where the geometry
+// does not matter yet) the defaults.
+std::optional<Config> startingConfig(const CommandLine& cl, bool defaultsServe, const std::string& needsWhat,
+                                     std::string& error)
+{
+    const std::string input = cl.value("input").value_or("");
+    const bool sessionConfig =
+        !input.empty() && std::filesystem::is_regular_file(std::filesystem::path(input) / kSessionConfigFile);
+    if (cl.has("config") || sessionConfig) return loadToolConfig(cl.value("config"), input, std::nullopt, error);
+    if (!defaultsServe) {
+        error = needsWhat + ": give --config IN.yml (run 'omnitune-calibrate rim' first for a new camera)";
+        return std::nullopt;
+    }
+    std::cerr << "note: no --config" << (input.empty() ? "" : " and no config.yml in " + input)
+              << ": starting from the defaults\n";
+    return Config{};
+}
+
+int save(const Config& config, const std::string& out)
+{
+    const bool existed = std::filesystem::exists(out);
+    if (const auto err = saveConfig(config, out, true)) return fail(err->toString());
+    std::cout << "wrote " << out << (existed ? " (previous kept as " + out + ".bak)" : std::string()) << "\n";
+    return 0;
+}
+
+// "39.0000 - 0.283330*d + 0.00055556*d^2"
+std::string ballCurveText(double c0, double c1, double c2)
+{
+    const auto term = [](double c, int decimals, const char* power) {
+        return std::string(c < 0 ? " - " : " + ") + fixedText(std::abs(c), decimals) + power;
+    };
+    return fixedText(c0, 4) + term(c1, 6, "*d") + term(c2, 8, "*d^2");
+}
+
+std::string pointText(cv::Point2d p) { return "(" + fixedText(p.x, 2) + ", " + fixedText(p.y, 2) + ")"; }
+
+int runRim(const CommandLine& cl, const std::string& out)
+{
+    if (!cl.has("input")) return fail("rim needs --input (see --help)");
+    const std::string input = *cl.value("input");
+    int frameCount = 8;
+    if (auto f = cl.value("frames")) {
+        const auto v = parseInt(*f);
+        if (!v || *v < 1) return fail("--frames must be a positive whole number, not '" + *f + "'");
+        frameCount = *v;
+    }
+    RimFitOptions rimOptions;
+    if (auto m = cl.value("margin")) {
+        const auto v = parseDouble(*m);
+        if (!v || *v < 0) return fail("--margin must be a number of pixels >= 0, not '" + *m + "'");
+        rimOptions.marginPx = *v;
+    }
+    auto opened = openFrameSource(input);
+    if (!opened.ok()) return fail(opened.error);
+    for (const auto& w : opened.warnings) std::cerr << "warning: " << w << "\n";
+    std::string error;
+    auto config = startingConfig(cl, true, "", error);
+    if (!config) return fail(error);
+
+    FitFrames frames = readFitFrames(*opened.source, frameCount);
+    for (const auto& w : frames.warnings) std::cerr << "warning: " << w << "\n";
+    if (!frames.ok()) return fail(frames.error->toString());
+    const cv::Size size = frames.images.front().size();
+    if (!config->mask.empty() && config->mask.size() != size)
+        return fail("the config's mask " + config->geometry.maskFile + " is " + sizeText(config->mask.size()) +
+                    " but the frames are " + sizeText(size) + ": make a mask for this camera or drop mask_file");
+
+    StderrProgress progress("omnitune-calibrate rim");
+    const RimFitResult rim = fitRim(frames.images, rimOptions, &progress);
+    if (!rim.ok()) return fail(rim.error->toString());
+    std::optional<BodyFit> body;
+    if (!cl.has("no-body")) {
+        const BodyFitResult b = fitBody(frames.images, rim.fit.centre, rim.fit.rimRadius, {}, &progress);
+        if (!b.ok()) return fail(b.error->toString() + " (or give --no-body to fit only the rim)");
+        body = b.fit;
+    }
+
+    const RimFit& r = rim.fit;
+    const cv::Size oldSize(config->geometry.imageWidth, config->geometry.imageHeight);
+    std::cout << "rim: " << frames.images.size() << " frame(s) of " << opened.source->description() << ", "
+              << sizeText(size) << (oldSize != size ? " (the config had " + sizeText(oldSize) + ")" : std::string()) << "\n"
+              << "  centre        " << pointText(r.centre) << " px (was "
+              << pointText({config->geometry.centerX, config->geometry.centerY}) << ")\n"
+              << "  mirror rim    " << fixedText(r.rimRadius, 2) << " px: " << r.inliers << " of " << r.points.size()
+              << " edge points from " << r.raysCast << " rays kept, residual RMS " << fixedText(r.rmsPx, 2) << " px, "
+              << "spread over " << fixedText(r.coverageDeg, 0) << " deg\n"
+              << "  outer radius  " << fixedText(r.outerRadius, 2) << " px (rim - " << fixedText(rimOptions.marginPx)
+              << " px; was " << fixedText(config->geometry.outerRadius, 2) << ")\n";
+    if (body)
+        std::cout << "  inner radius  " << fixedText(body->innerRadius, 2) << " px (robot body edge "
+                  << fixedText(body->bodyRadius, 2) << " px + " << fixedText(BodyFitOptions{}.marginPx)
+                  << " px; ring variance " << fixedText(body->bodyLevel) << " on the body, "
+                  << fixedText(body->fieldLevel) << " over the field; was " << fixedText(config->geometry.innerRadius, 2)
+                  << ")\n";
+    else
+        std::cout << "  inner radius  " << fixedText(config->geometry.innerRadius, 2) << " px (kept: --no-body)\n";
+
+    applyRimFit(r, size, config->geometry);
+    if (body) config->geometry.innerRadius = body->innerRadius;
+    const auto& sensors = config->sensors;
+    // A pixel either way is no fault worth a note; a sensor ray into the housing is.
+    if (sensors.innerRadius < config->geometry.innerRadius - 1 || sensors.outerRadius > config->geometry.outerRadius + 1)
+        std::cerr << "note: the radial sensors run from " << fixedText(sensors.innerRadius) << " to "
+                  << fixedText(sensors.outerRadius) << " px, outside the new ring; set sensors.inner_radius and "
+                  << "outer_radius to match\n";
+    return save(*config, out);
+}
+
+int runDistanceMap(const CommandLine& cl, const std::string& out)
+{
+    if (!cl.has("points")) return fail("distance-map needs --points POINTS.csv (see --help)");
+    DistanceMapFitOptions options;
+    if (auto d = cl.value("degree")) {
+        const auto v = parseInt(*d);
+        if (!v || *v < 1 || *v > 6) return fail("--degree must be 1..6, not '" + *d + "'");
+        options.degree = *v;
+    }
+    std::optional<double> height;
+    if (auto h = cl.value("height")) {
+        height = parseDouble(*h);
+        if (!height || *height <= 0) return fail("--height must be a positive number of metres, not '" + *h + "'");
+    }
+    const CalibrationPointsParse parse = loadCalibrationPoints(*cl.value("points"));
+    for (const auto& w : parse.warnings) std::cerr << "warning: " << w.toString() << "\n";
+    if (!parse.ok()) return fail(parse.error->toString());
+    std::string error;
+    auto config = startingConfig(cl, !parse.needsCentre(), *cl.value("points") + " gives image points (x,y): their radius needs the mirror centre", error);
+    if (!config) return fail(error);
+
+    const cv::Point2d centre(config->geometry.centerX, config->geometry.centerY);
+    const std::vector<DistancePoint> points = toDistancePoints(parse.points, centre);
+    const DistanceMapFitResult result = fitDistanceMap(points, options);
+    if (!result.ok()) return fail(result.error->toString());
+    const DistanceMapFit& f = result.fit;
+    std::cout << "distance-map: " << points.size() << " points from " << *cl.value("points") << ", degree "
+              << options.degree << ", " << fixedText(f.minRadiusPx) << ".." << fixedText(f.maxRadiusPx) << " px\n"
+              << "  residual RMS " << fixedText(f.rmsCm, 2) << " cm, largest " << fixedText(f.maxAbsCm, 2) << " cm\n";
+    for (std::size_t i = 0; i < points.size(); ++i)
+        std::cout << "  " << fixedText(points[i].radiusPx, 1) << " px  " << fixedText(points[i].distanceM, 3) << " m  fit "
+                  << fixedText(f.distanceAt(points[i].radiusPx), 3) << " m  residual " << fixedText(f.residualsCm[i], 2)
+                  << " cm\n";
+    std::cout << "  written as a table of " << f.tableRadiiPx.size() << " radii (within "
+              << fixedText(f.tableDeviationCm, 2) << " cm of the fit)\n";
+    applyDistanceMapFit(f, config->distanceMap);
+    if (height) config->distanceMap.viewpointHeight = *height;
+    std::cout << "  viewpoint height " << fixedText(config->distanceMap.viewpointHeight, 3) << " m"
+              << (height ? "" : " (kept; --height sets it)") << ": a ball seen at radius r lies at "
+              << "distance(r) * (height - ball radius) / height\n";
+    return save(*config, out);
+}
+
+// The samples: a --samples file, else the visible balls of the --input session's truth.csv.
+struct BallInput {
+    std::vector<BallSample> samples;
+    std::string from;  // "24 marked balls in sessions/demo"
+};
+
+std::optional<BallInput> ballSamplesFromSession(const std::string& input, const Config& config, std::string& error)
+{
+    SessionOpen opened = SessionReader::open(input);
+    if (!opened.ok()) {
+        error = opened.error->toString() + " (ball-model reads the truth marks of a session, or give --samples)";
+        return std::nullopt;
+    }
+    for (const auto& w : opened.reader->warnings()) std::cerr << "warning: " << w.toString() << "\n";
+    const cv::Size size = opened.reader->frameSize();
+    const cv::Size geometrySize(config.geometry.imageWidth, config.geometry.imageHeight);
+    if (size != geometrySize) {
+        error = "the config's geometry is for " + sizeText(geometrySize) + " frames but " + input + " holds " +
+                sizeText(size) + " frames: run 'omnitune-calibrate rim' on it first";
+        return std::nullopt;
+    }
+    const cv::Point2d centre(config.geometry.centerX, config.geometry.centerY);
+    BallInput in{ballSamplesFromTruth(opened.reader->truth(), centre), ""};
+    in.from = std::to_string(in.samples.size()) + " marked balls in " + input + ", measured from the centre " +
+              pointText(centre);
+    return in;
+}
+
+int runBallModel(const CommandLine& cl, const std::string& out)
+{
+    const auto samplesPath = cl.value("samples");
+    if (!samplesPath && !cl.has("input"))
+        return fail("ball-model needs --input SESSION with truth.csv, or --samples SAMPLES.csv (see --help)");
+    std::optional<BallSamplesParse> file;
+    if (samplesPath) {
+        file = loadBallSamples(*samplesPath);
+        for (const auto& w : file->warnings) std::cerr << "warning: " << w.toString() << "\n";
+        if (!file->ok()) return fail(file->error->toString());
+    }
+    std::string error;
+    auto config = startingConfig(cl, file && !file->needsDistanceMap(),
+                                 file ? *samplesPath + " gives ground distances: they need the config's distance map"
+                                      : "ball-model measures the marks from the mirror centre",
+                                 error);
+    if (!config) return fail(error);
+    std::optional<BallInput> in;
+    if (file) {
+        in = BallInput{toBallSamples(file->rows, DistanceMap(config->distanceMap)), ""};
+        in->from = std::to_string(in->samples.size()) + " samples from " + *samplesPath;
+    } else {
+        in = ballSamplesFromSession(*cl.value("input"), *config, error);
+        if (!in) return fail(error);
+    }
+
+    const BallModelFitResult result = fitBallModel(in->samples);
+    if (!result.ok()) return fail(result.error->toString());
+    const BallModelFit& f = result.fit;
+    const BallSample& worst = in->samples[std::size_t(f.worstSample)];
+    std::cout << "ball-model: " << in->from << "; " << fixedText(f.minDistancePx) << ".." << fixedText(f.maxDistancePx)
+              << " px out\n"
+              << "  r(d) = " << ballCurveText(f.c0, f.c1, f.c2) << " px  (was "
+              << ballCurveText(config->ball.c0, config->ball.c1, config->ball.c2) << ")\n"
+              << "  residual RMS " << fixedText(f.rmsPx, 2) << " px, largest " << fixedText(f.maxAbsPx, 2) << " px ("
+              << (worst.frame >= 0 ? "frame " + std::to_string(worst.frame) + ", " : std::string())
+              << fixedText(worst.distancePx) << " px out, radius " << fixedText(worst.radiusPx, 2) << " px)\n";
+    applyBallModelFit(f, config->ball);
+    return save(*config, out);
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    quietOpenCvLogs();
+    const std::string subcommand = argc > 1 ? argv[1] : "";
+    // Options come after the subcommand; --help works in either place.
+    const CommandLine cl = parseCommandLine(argc - 1, argv + 1, kOptions);
+    if (subcommand == "--help" || subcommand == "-h" || cl.has("help")) {
+        std::cout << usageText("omnitune-calibrate SUBCOMMAND", kSummary, kOptions);
+        return 0;
+    }
+    if (subcommand != "rim" && subcommand != "distance-map" && subcommand != "ball-model")
+        return fail((subcommand.empty() ? std::string("no subcommand") : "unknown subcommand '" + subcommand + "'") +
+                    ": rim, distance-map or ball-model (see --help)");
+    if (!cl.error.empty()) return fail(cl.error + " (see --help)");
+    if (!cl.has("out")) return fail("--out OUT.yml is required (see --help)");
+    const std::string out = *cl.value("out");
+    try {
+        if (subcommand == "rim") return runRim(cl, out);
+        if (subcommand == "distance-map") return runDistanceMap(cl, out);
+        return runBallModel(cl, out);
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+}

@@ -1,0 +1,56 @@
+#pragma once
+// The expected ball radius r(d) = c0 + c1*d + c2*d^2 (core/BallModel.h, thesis Fig. 4.7) from
+// samples of the ball as seen: image distance of its centre from the mirror centre and its
+// radius, both px. The samples come from ground-truth marks (a session's truth.csv) or, later,
+// from accepted detections.
+#include "calib/fit/FitError.h"
+#include "calib/session/TruthCsv.h"
+#include "core/BallModel.h"
+
+#include <opencv2/core.hpp>
+
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace omnitune {
+
+struct BallSample {
+    double distancePx = 0.0;  // ball centre's image distance from the mirror centre
+    double radiusPx = 0.0;    // the ball's radius as seen
+    int frame = -1;           // where it was marked, -1 when unknown
+};
+
+struct BallModelFitOptions {
+    int minSamples = 6;         // three coefficients; twice that many samples keeps one mark from ruling
+    double minSpanPx = 40.0;    // px the samples' distances must span, or the curve is a guess outside them
+};
+
+struct BallModelFit {
+    double c0 = 0.0, c1 = 0.0, c2 = 0.0;  // BallModelOptions' coefficients
+    double minDistancePx = 0.0;           // span of the samples
+    double maxDistancePx = 0.0;
+    std::vector<double> residualsPx;      // per sample, seen minus fitted
+    double rmsPx = 0.0;
+    double maxAbsPx = 0.0;
+    int worstSample = -1;                 // index of the sample with the largest residual
+
+    double radiusAt(double distancePx) const { return c0 + c1 * distancePx + c2 * distancePx * distancePx; }
+};
+
+struct BallModelFitResult {
+    BallModelFit fit;  // meaningful only when ok()
+    std::optional<FitError> error;
+
+    bool ok() const { return !error.has_value(); }
+};
+
+// The visible balls of the truth rows, measured from `centre`.
+std::vector<BallSample> ballSamplesFromTruth(const std::map<int, TruthRow>& truth, cv::Point2d centre);
+
+BallModelFitResult fitBallModel(const std::vector<BallSample>& samples, const BallModelFitOptions& options = {});
+
+// Writes c0, c1, c2; the clamps and the square ratio stay.
+void applyBallModelFit(const BallModelFit& fit, BallModelOptions& ball);
+
+}  // namespace omnitune
