@@ -20,6 +20,7 @@ struct OutlineLine {
     int depth = 0;                     // sections, list items and open brackets around its deepest point
     std::string path;                  // dotted key path of the key on this line, or of the key above it
     bool hasKey = false;               // the line starts "key:"
+    int indent = -1;                   // columns before its content; -1 inside a [ ] or { } spanning lines
     std::vector<std::string> scalars;  // its plain (unquoted) values, e.g. "200" or the elements of [ 1, 2 ]
 };
 
@@ -50,6 +51,7 @@ std::vector<OutlineLine> outline(const std::string& text, int maxDepth)
         if (pos == std::string_view::npos || line[pos] == '#') continue;
         if (flow == 0) {
             if (pos == 0 && (line[0] == '%' || line.substr(0, 3) == "---" || line.substr(0, 3) == "...")) continue;
+            o.indent = int(pos);
             while (!open.empty() && open.back().column >= pos) open.pop_back();
             // "- " list items nest one level each, even on one line ("- - - x").
             while (pos < line.size() && line[pos] == '-' && (pos + 1 == line.size() || line[pos + 1] == ' ')) {
@@ -167,10 +169,26 @@ std::optional<YamlParseError> checkYamlShape(const std::string& text)
     if (text.size() > kMaxYamlBytes)
         return YamlParseError{0, "is " + std::to_string(text.size() / 1024) + " KiB; OmniTune reads YAML files up to " +
                                      std::to_string(kMaxYamlBytes / 1024) + " KiB"};
+    // YAML allows no control character but tab, newline and carriage return; OpenCV's reader
+    // loops for good on some (":---" then \x04, found by fuzz/fuzz_config).
+    if (const std::size_t at = findUnsavableCharacter(text); at != std::string::npos)
+        return YamlParseError{int(std::count(text.begin(), text.begin() + long(at), '\n')) + 1,
+                              "holds a control character (byte " + std::to_string(int(static_cast<unsigned char>(text[at]))) +
+                                  "): not a YAML text file; refused before parsing"};
     const std::vector<OutlineLine> lines = outline(text, kMaxYamlDepth);
     if (!lines.empty() && lines.back().depth > kMaxYamlDepth)
         return YamlParseError{lines.back().line, "nested more than " + std::to_string(kMaxYamlDepth) +
                                                      " levels deep (sections, list items and brackets); refused before parsing"};
+    // A line left of the document's first one is invalid YAML, and OpenCV's reader loops for
+    // good on some ("  t: 1" then "x---", found by fuzz/fuzz_config).
+    int firstIndent = -1;
+    for (const OutlineLine& o : lines) {
+        if (o.indent < 0) continue;
+        if (firstIndent < 0) firstIndent = o.indent;
+        else if (o.indent < firstIndent)
+            return YamlParseError{o.line, "Incorrect indentation: left of the first line (" + std::to_string(firstIndent) +
+                                              " spaces in); refused before parsing"};
+    }
     return std::nullopt;
 }
 

@@ -17,6 +17,8 @@ namespace omnitune {
 // Limits far above any file OmniTune writes (a config is ~15 KB and 4 levels deep).
 inline constexpr std::size_t kMaxYamlBytes = 1024 * 1024;
 inline constexpr int kMaxYamlDepth = 64;
+// Text values longer than this are refused: OpenCV's YAML reader fails on strings of ~4 KiB.
+inline constexpr std::size_t kMaxYamlTextBytes = 1024;
 
 struct YamlParseError {
     int line = 0;         // 1-based in the text given; 0 when none applies

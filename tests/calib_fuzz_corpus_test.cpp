@@ -89,6 +89,35 @@ private slots:
         QVERIFY(!parseSessionInfo(" n:1\n :", "session.yml").ok());
     }
 
+    // Found by fuzz_config in CI: OpenCV's reader loops for good on ":---" followed by a control
+    // byte. A control byte has no place in a YAML text file: refused before parsing, with its line.
+    void controlByteInTheFileIsRefusedBeforeParsing()
+    {
+        const std::string text = "%YAML:1.0\n t:.\n:---\n\x04";
+        const ConfigLoad load = parseConfig(text, "c.yml");
+        QVERIFY(!load.ok());
+        QCOMPARE(load.error->kind, ConfigIssueKind::ParseError);
+        QCOMPARE(load.error->line, 4);
+        QVERIFY(QString::fromStdString(load.error->message).contains("control character"));
+        QVERIFY(!parseSessionInfo(text, "session.yml").ok());
+    }
+
+    // Found by fuzz_config: OpenCV's reader loops for good when a line lies left of the first
+    // one (" t: 1", then "x---"): invalid YAML, refused before parsing with its line.
+    void lineLeftOfTheFirstIsRefusedBeforeParsing()
+    {
+        for (const char* text : {" t: 1\nx---\nc", " n:1.0\n t:.\n:---\ncamr,\r\r AM :"}) {
+            const ConfigLoad load = parseConfig(text, "c.yml");
+            QVERIFY(!load.ok());
+            QCOMPARE(load.error->kind, ConfigIssueKind::ParseError);
+            QVERIFY(load.error->line == 2 || load.error->line == 3);
+            QVERIFY(QString::fromStdString(load.error->message).contains("Incorrect indentation"));
+            QVERIFY(!parseSessionInfo(text, "session.yml").ok());
+        }
+        // Indented documents as such stay readable.
+        QVERIFY(parseConfig(" schema: 1\n camera:\n    gain: 100\n", "c.yml").ok());
+    }
+
     // Found by fuzz_config and fuzz_session: an escape such as "\1" reads as a control character
     // that cv::FileStorage writes as "\x01" and then cannot read: the window saved a config it
     // could not open again. Such text is refused when read.
