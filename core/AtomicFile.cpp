@@ -26,6 +26,16 @@ namespace fs = std::filesystem;
 
 std::string errnoText(int e) { return std::strerror(e); }
 
+// A save through a symbolic link replaces the file the link points at, never the link itself
+// (a session's config.yml may link to the one the robot loads).
+std::string followLinks(const std::string& path)
+{
+    std::error_code ec;
+    if (!fs::is_symlink(path, ec)) return path;
+    const fs::path target = fs::weakly_canonical(path, ec);
+    return ec ? path : target.string();
+}
+
 std::string folderOf(const std::string& path)
 {
     const fs::path parent = fs::path(path).parent_path();
@@ -115,7 +125,7 @@ std::optional<std::string> keepFirstBackup(const std::string& path)
 
 }  // namespace
 
-StagedFile::StagedFile(std::string path, const std::string& bytes) : path_(std::move(path))
+StagedFile::StagedFile(std::string path, const std::string& bytes) : path_(followLinks(path))
 {
     const int fd = createTemp(path_, temp_);
     if (fd < 0) {
@@ -156,7 +166,7 @@ std::optional<std::string> StagedFile::commit(bool keepBackup)
 
 FolderSaveLock::FolderSaveLock(const std::string& file)
 {
-    const std::string folder = folderOf(file);
+    const std::string folder = folderOf(followLinks(file));
     fd_ = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (fd_ < 0) return;  // no lock to take: the write itself will report why the folder is unusable
     // Saves take milliseconds; a holder that keeps the lock this long is stuck or saving a lot.

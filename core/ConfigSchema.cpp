@@ -1,5 +1,7 @@
 #include "core/ConfigSchema.h"
 
+#include "core/YamlText.h"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -331,6 +333,16 @@ std::vector<ConfigIssue> checkConfig(const Config& c, const std::string& file)
             if (outside(x))
                 out.push_back(issue(ConfigIssueKind::OutOfRange, file, k.path,
                                     formatConfigValue(v) + " is outside " + range + (k.unit.empty() ? "" : " " + k.unit)));
+        } else if (k.type == ValueType::Text) {
+            const std::string& s = std::get<std::string>(v);
+            if (s.size() > kMaxYamlTextBytes)
+                out.push_back(issue(ConfigIssueKind::OutOfRange, file, k.path,
+                                    "is " + std::to_string(s.size()) + " characters long; at most " +
+                                        std::to_string(kMaxYamlTextBytes) + " can be saved and read back"));
+            else if (const std::size_t at = findUnsavableCharacter(s); at != std::string::npos)
+                out.push_back(issue(ConfigIssueKind::WrongType, file, k.path,
+                                    "contains a control character (at " + std::to_string(at) +
+                                        "), which could not be saved back"));
         } else if (k.type == ValueType::DoubleList) {
             for (double x : std::get<std::vector<double>>(v))
                 if (outside(x)) {

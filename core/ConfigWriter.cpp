@@ -37,17 +37,24 @@ std::string shortestNumber(double v)
     return s;
 }
 
-// A string quoted and escaped exactly as OpenCV's own YAML writer does it (so its reader
-// takes it back unchanged).
+// A string always in double quotes, escaped as OpenCV's YAML reader unescapes it. Not OpenCV's
+// own writer: it leaves a text that starts and ends with a quote unescaped ("Flea2" in quotes
+// came back without them; a lone " wrote a file that does not load). The parser refuses the
+// other control characters, and checkConfig() text longer than the reader takes.
 std::string quoted(const std::string& s)
 {
-    cv::FileStorage fs(".yml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
-    fs.write("v", s);  // not <<, which takes a text starting with [ { ] } for a list or map
-    const std::string text = fs.releaseAndGetString();
-    const auto at = text.find("\nv: ") + 4;
-    std::string value = text.substr(at, text.find_last_not_of('\n') + 1 - at);
-    if (value.empty() || value.front() != '"') value = "\"" + value + "\"";  // plain words: quoted too
-    return value;
+    std::string out = "\"";
+    for (const char c : s) {
+        switch (c) {
+        case '\\': out += "\\\\"; break;
+        case '"': out += "\\\""; break;
+        case '\n': out += "\\n"; break;
+        case '\r': out += "\\r"; break;
+        case '\t': out += "\\t"; break;
+        default: out += c;
+        }
+    }
+    return out + "\"";
 }
 
 std::string valueText(const ConfigValue& v)

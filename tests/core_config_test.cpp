@@ -8,6 +8,8 @@
 
 #include <QtTest>
 
+#include <filesystem>
+
 #include <csignal>
 #include <fstream>
 #include <sstream>
@@ -159,7 +161,7 @@ private slots:
         QVERIFY(!saveConfig(b, path.toStdString()));
         QCOMPARE(loadConfig(path.toStdString()).config.edges.cannyLow, 42);
         QCOMPARE(loadConfig((path + ".bak").toStdString()).config.edges.cannyLow, 41);
-        QVERIFY(!QFile::exists(path + ".tmp"));
+        QCOMPARE(tempFilesIn(QFileInfo(path).path()), QStringList());
     }
 
     void invalidConfigIsNotSaved()
@@ -418,6 +420,61 @@ private slots:
         QVERIFY2(load.ok(), load.error ? load.error->toString().c_str() : "");
         QCOMPARE(load.config.camera.model, c.camera.model);
         QVERIFY(parseConfig(withKey("ball", "  c0: 0\n  c1: -3\n  c2: 0.0100\n"), "c.yml").ok());
+    }
+
+    // Text with quotes, backslashes and YAML's own characters saves and loads back unchanged
+    // (OpenCV's writer dropped the quotes of "\"Flea2\"" and wrote a lone " unreadably); text
+    // too long for OpenCV's reader is refused before it is saved.
+    void textRoundTripsExactly_data()
+    {
+        QTest::addColumn<QString>("model");
+        QTest::newRow("quoted") << "\"Flea2\"";
+        QTest::newRow("lone quote") << "\"";
+        QTest::newRow("quotes inside") << "\"a\" b \"c\"";
+        QTest::newRow("backslash") << "C:\\cam\\\"x";
+        QTest::newRow("yaml characters") << "x: y # z [t] {a} - 'q' %YAML";
+        QTest::newRow("tab and newline") << "tab\there\nnext line";
+        QTest::newRow("spaces") << "  lead and trail  ";
+    }
+    void textRoundTripsExactly()
+    {
+        QFETCH(QString, model);
+        Config c;
+        c.camera.model = model.toStdString();
+        QVERIFY(checkConfig(c).empty());
+        const ConfigLoad load = parseConfig(serializeConfig(c), "c.yml");
+        QVERIFY2(load.ok(), load.error ? load.error->toString().c_str() : "");
+        QCOMPARE(QString::fromStdString(load.config.camera.model), model);
+    }
+    void textTooLongToReadBackIsRefused()
+    {
+        Config c;
+        c.camera.model = std::string(5000, 'a');
+        const auto problems = checkConfig(c, "c.yml");
+        QVERIFY(!problems.empty());
+        QCOMPARE(problems.front().key, std::string("camera.model"));
+        QTemporaryDir dir;
+        QVERIFY(saveConfig(c, dir.filePath("c.yml").toStdString()).has_value());  // refused, nothing written
+        QVERIFY(!QFile::exists(dir.filePath("c.yml")));
+    }
+
+    // A config that is a symbolic link (to the one the robot loads) is saved through the link:
+    // the link stays, its target gets the new file, the target's first backup is kept.
+    void saveThroughALinkKeepsTheLink()
+    {
+        QTemporaryDir dir;
+        const std::string target = dir.filePath("robot.yml").toStdString();
+        const std::string link = dir.filePath("config.yml").toStdString();
+        Config c;
+        QVERIFY(!saveConfig(c, target).has_value());
+        std::filesystem::create_symlink("robot.yml", link);
+        c.camera.gain = 123;
+        QVERIFY(!saveConfig(c, link).has_value());
+        QVERIFY(std::filesystem::is_symlink(link));
+        const ConfigLoad load = loadConfig(target);
+        QVERIFY(load.ok());
+        QCOMPARE(load.config.camera.gain, 123);
+        QVERIFY(QFile::exists(dir.filePath("robot.yml.bak")));
     }
 
     // Issue 13: saved numbers in the shortest form that reads back exactly.
