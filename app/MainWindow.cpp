@@ -288,6 +288,7 @@ void MainWindow::clearForNewSource()
     // Nothing of the previous source may stay on screen under the new title: panes, overlays,
     // table and labels are emptied now, and runs of the old source still in flight are dropped.
     ++sourceTag_;
+    source_.reset();  // a config loaded (or restored) before the new source is set runs nothing old
     lastRun_.reset();
     marker_->setRun(nullptr);
     view_->clear(tr("Opening %1: reading its first frame...").arg(sourceName_));
@@ -461,7 +462,9 @@ void MainWindow::chooseSourceFile()
 void MainWindow::chooseConfig()
 {
     const QString path = configFiles_->choose();
-    if (!path.isEmpty()) recent_->add(path);
+    if (path.isEmpty()) return;
+    offerRecoveredEdits();  // edits a crashed run left unsaved for this config
+    recent_->add(path);
 }
 
 void MainWindow::updateTitle()

@@ -26,15 +26,20 @@ std::optional<Config> loadToolConfig(const std::optional<std::string>& configPat
         namespace fs = std::filesystem;
         const fs::path input(inputPath);
         std::error_code ec;
-        const fs::path folder = input.filename() == kSessionInfoFile ? input.parent_path() : input;
+        fs::path folder = input.filename() == kSessionInfoFile ? input.parent_path() : input;
+        if (folder.empty()) folder = ".";  // --input session.yml from inside the session
         const bool isSession = fs::is_directory(folder, ec) && (fs::exists(folder / kSessionInfoFile, ec) ||
                                                                 fs::is_directory(folder / kSessionFramesDir, ec));
         if (isSession) {
-            const SessionOpen session = SessionReader::open(folder.empty() ? "." : folder.string());
-            if (session.ok()) path = session.reader->configPath();
+            const SessionOpen session = SessionReader::open(folder.string());
+            if (!session.ok()) {
+                error = session.error ? session.error->toString() : "cannot open the session " + inputPath;
+                return std::nullopt;
+            }
+            path = session.reader->configPath();
             if (path.empty()) {
                 error = "no --config given and the session " + inputPath + " has no config: " +
-                        (session.ok() && session.reader->configIssue() ? session.reader->configIssue()->toString()
+                        (session.reader->configIssue() ? session.reader->configIssue()->toString()
                                                                        : "no " + std::string(kSessionConfigFile) + " in it");
                 return std::nullopt;
             }

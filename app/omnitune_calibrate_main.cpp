@@ -57,14 +57,19 @@ int fail(const std::string& why)
 
 std::string sizeText(cv::Size s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }
 
-// The config to start from: --config, else the input's config.yml, else (where the geometry
-// does not matter yet) the defaults.
+// The config to start from: --config, else the config the input session names (the one rule of
+// calib/session/SessionConfig.h that the window and every tool follow), else (where the
+// geometry does not matter yet) the defaults.
 std::optional<Config> startingConfig(const CommandLine& cl, bool defaultsServe, const std::string& needsWhat,
                                      std::string& error)
 {
     const std::string input = cl.value("input").value_or("");
-    const bool sessionConfig =
-        !input.empty() && std::filesystem::is_regular_file(std::filesystem::path(input) / kSessionConfigFile);
+    bool sessionConfig = false;
+    if (!input.empty() && std::filesystem::is_directory(input)) {
+        const SessionOpen session = SessionReader::open(input);
+        // A config_file it refuses goes to loadToolConfig too, which says why.
+        sessionConfig = session.ok() && (session.reader->hasConfig() || session.reader->configIssue());
+    }
     if (cl.has("config") || sessionConfig) return loadToolConfig(cl.value("config"), input, std::nullopt, error);
     if (!defaultsServe) {
         error = needsWhat + ": give --config IN.yml (run 'omnitune-calibrate rim' first for a new camera)";
@@ -79,7 +84,9 @@ int save(const Config& config, const std::string& out)
 {
     const bool existed = std::filesystem::exists(out);
     if (const auto err = saveConfig(config, out, true)) return fail(err->toString());
-    std::cout << "wrote " << out << (existed ? " (previous kept as " + out + ".bak)" : std::string()) << "\n";
+    std::cout << "wrote " << out
+              << (existed ? " (" + out + ".bak keeps the file from before OmniTune first saved over it)" : std::string())
+              << "\n";
     return 0;
 }
 

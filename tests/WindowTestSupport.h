@@ -7,9 +7,19 @@
 #include <QApplication>
 #include <QDirIterator>
 #include <QMessageBox>
+#include <QTemporaryDir>
 #include <QtTest>
 
 namespace omnitune::testing {
+
+// Crash-recovery files of the windows a test makes go to a folder of this run's own, never to
+// the shared test-mode data folder: a file left there by another run (the sanitizer build's
+// tests have the same names) would open a modal "Recover unsaved edits" box in the next one.
+inline void isolateRecoveryFiles()
+{
+    static QTemporaryDir dir;
+    qputenv("OMNITUNE_RECOVERY_DIR", dir.path().toUtf8());
+}
 
 // Copies the demo session (the repository's copy must never change).
 inline bool copyDemo(const QString& to)

@@ -73,6 +73,7 @@ private slots:
     {
         QStandardPaths::setTestModeEnabled(true);  // recent files: not the user's settings
         QSettings().clear();
+        isolateRecoveryFiles();
     }
 
     void init()

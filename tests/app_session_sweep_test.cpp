@@ -95,6 +95,7 @@ private slots:
     {
         QStandardPaths::setTestModeEnabled(true);  // recent files: not the user's settings
         QSettings().clear();
+        isolateRecoveryFiles();
     }
 
     void sweepMatchesTheBatchEvaluation()

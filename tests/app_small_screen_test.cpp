@@ -81,6 +81,7 @@ private slots:
     {
         QStandardPaths::setTestModeEnabled(true);
         QSettings().clear();
+        isolateRecoveryFiles();
     }
 
     void init()

@@ -71,6 +71,7 @@ private slots:
     {
         QStandardPaths::setTestModeEnabled(true);  // recent files: not the user's settings
         QSettings().clear();
+        isolateRecoveryFiles();
     }
     void cleanup() { window_.reset(); }
 

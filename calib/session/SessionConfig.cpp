@@ -28,9 +28,18 @@ SessionConfigChoice sessionConfigPath(const std::string& folder, const std::stri
     SessionConfigChoice out;
     const fs::path dir(folder);
     std::error_code ec;
-    if (configFile.empty()) {
+    if (configFile.empty()) {  // config.yml, under the same inside-the-folder rule as a named file
         const fs::path fallback = dir / kSessionConfigFile;
-        if (fs::is_regular_file(fallback, ec)) out.path = fallback.string();
+        if (!fs::is_regular_file(fallback, ec)) return out;
+        const fs::path realDir = fs::canonical(dir, ec);
+        const fs::path realFile = ec ? fs::path() : fs::canonical(fallback, ec);
+        if (ec || !isInside(realFile, realDir)) {
+            out.issue = SessionIssue{SessionIssueKind::MissingConfig, infoFile, 0, std::string(kSessionConfigFile),
+                                     "leads outside the session folder (a link?): a session may only use a config "
+                                     "inside it; the session has no config"};
+            return out;
+        }
+        out.path = fallback.string();
         return out;
     }
     auto refuse = [&](const std::string& why) {

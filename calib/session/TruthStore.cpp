@@ -41,7 +41,7 @@ std::optional<std::string> TruthStore::open(const std::string& sessionDir, std::
         }
         if (warnings)
             for (const SessionIssue& w : parsed.warnings)
-                warnings->push_back(w.toString() + " (dropped when a mark is saved; truth.csv.bak keeps it)");
+                warnings->push_back(w.toString() + " (dropped when a mark is saved: fix the row first to keep it)");
         rows = parsed.rows;
     }
     path_ = path;
