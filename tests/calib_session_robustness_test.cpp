@@ -231,6 +231,22 @@ private slots:
                  qPrintable(listed(opened.reader->warnings())));
     }
 
+    // config.yml itself may not lead out of the session either (the same rule as config_file).
+    void configYmlLinkingOutIsRefused()
+    {
+        QTemporaryDir tmp;
+        const std::string folder = tmp.filePath("s").toStdString();
+        recordSession(folder, 2);
+        fs::remove(fs::path(folder) / "config.yml");
+        writeFile(tmp.filePath("outside.yml").toStdString(), "outside\n");
+        fs::create_symlink(tmp.filePath("outside.yml").toStdString(), folder + "/config.yml");
+        const SessionConfigChoice choice = sessionConfigPath(folder, "", "s/session.yml");
+        QCOMPARE(choice.path, std::string());
+        QVERIFY(choice.issue);
+        QVERIFY2(choice.issue->toString().find("outside the session folder") != std::string::npos,
+                 choice.issue->toString().c_str());
+    }
+
     // Defect 7: killed right after the periodic session.yml rewrite, a recording used to look
     // complete (frame_count matched frames/). The folder is copied at that moment: what a kill
     // leaves on disk.
