@@ -21,6 +21,7 @@ struct OutlineLine {
     std::string path;                  // dotted key path of the key on this line, or of the key above it
     bool hasKey = false;               // the line starts "key:"
     int indent = -1;                   // columns before its content; -1 inside a [ ] or { } spanning lines
+    bool stray = false;                // none of the line kinds below (OmniTune never writes one)
     std::vector<std::string> scalars;  // its plain (unquoted) values, e.g. "200" or the elements of [ 1, 2 ]
 };
 
@@ -50,12 +51,22 @@ std::vector<OutlineLine> outline(const std::string& text, int maxDepth)
         std::size_t pos = line.find_first_not_of(' ');
         if (pos == std::string_view::npos || line[pos] == '#') continue;
         if (flow == 0) {
-            if (pos == 0 && (line[0] == '%' || line.substr(0, 3) == "---" || line.substr(0, 3) == "...")) continue;
+            // Directives on the first line, document markers alone on theirs.
+            if (pos == 0 && line[0] == '%') {
+                if (lineNo == 1) continue;
+                o.stray = true;
+            } else if (pos == 0 && (line.substr(0, 3) == "---" || line.substr(0, 3) == "...")) {
+                const std::size_t rest = line.find_first_not_of(' ', 3);
+                if (rest == std::string_view::npos || line[rest] == '#') continue;
+                o.stray = true;
+            }
             o.indent = int(pos);
+            bool listItem = false;
             while (!open.empty() && open.back().column >= pos) open.pop_back();
             // "- " list items nest one level each, even on one line ("- - - x").
             while (pos < line.size() && line[pos] == '-' && (pos + 1 == line.size() || line[pos + 1] == ' ')) {
                 open.push_back({pos, "#" + std::to_string(lineNo) + "." + std::to_string(pos)});
+                listItem = true;
                 pos = line.find_first_not_of(' ', pos + 1);
                 if (pos == std::string_view::npos) pos = line.size();
             }
@@ -72,6 +83,9 @@ std::vector<OutlineLine> outline(const std::string& text, int maxDepth)
                 open.push_back({pos, key});
                 pos = colon + 1;
             }
+            // Else a value on a line of its own: a flow collection or a quoted text may start one.
+            if (!o.hasKey && !listItem && std::string_view("[{\"'").find(line[pos]) == std::string_view::npos)
+                o.stray = true;
         } else {
             pos = 0;
         }
@@ -189,6 +203,12 @@ std::optional<YamlParseError> checkYamlShape(const std::string& text)
             return YamlParseError{o.line, "Incorrect indentation: left of the first line (" + std::to_string(firstIndent) +
                                               " spaces in); refused before parsing"};
     }
+    // OmniTune's YAML is "key: value" lines, "- value" list items and [ ] / { } values; OpenCV's
+    // reader loops for good on some other lines ("\xba t -" below "--- a: 1", found by
+    // fuzz/fuzz_config), so anything else is refused before it sees them.
+    for (const OutlineLine& o : lines)
+        if (o.stray)
+            return YamlParseError{o.line, "neither \"key: value\" nor a list item \"- value\"; refused before parsing"};
     return std::nullopt;
 }
 

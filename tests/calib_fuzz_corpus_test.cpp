@@ -85,7 +85,8 @@ private slots:
         const ConfigLoad load = parseConfig(" n:1\n :", "c.yml");
         QVERIFY(!load.ok());
         QCOMPARE(load.error->kind, ConfigIssueKind::ParseError);
-        QVERIFY(QString::fromStdString(load.error->toString()).startsWith("c.yml: not a valid YAML config"));
+        QVERIFY(QString::fromStdString(load.error->toString()).startsWith("c.yml:"));
+        QVERIFY(QString::fromStdString(load.error->toString()).contains("not a valid YAML config"));
         QVERIFY(!parseSessionInfo(" n:1\n :", "session.yml").ok());
     }
 
@@ -116,6 +117,18 @@ private slots:
         }
         // Indented documents as such stay readable.
         QVERIFY(parseConfig(" schema: 1\n camera:\n    gain: 100\n", "c.yml").ok());
+    }
+
+    // Found by fuzz_config in CI: OpenCV's reader loops for good on a line that is neither
+    // "key: value" nor a list item (below a "--- a: 1" line): refused before parsing.
+    void strayLineIsRefusedBeforeParsing()
+    {
+        for (const char* text : {"---ema: 1\n\xba t -\nca1\n   g\x8a\x9a\xdf|\n", "schema: 1\ncamera\n", "a: 1\nb:2\n"}) {
+            const ConfigLoad load = parseConfig(text, "c.yml");
+            QVERIFY(!load.ok());
+            QCOMPARE(load.error->kind, ConfigIssueKind::ParseError);
+            QVERIFY2(QString::fromStdString(load.error->message).contains("neither"), load.error->toString().c_str());
+        }
     }
 
     // Found by fuzz_config and fuzz_session: an escape such as "\1" reads as a control character
