@@ -3,7 +3,9 @@
 #include "core/ConfigParser.h"
 #include "core/ConfigSchema.h"
 #include "core/ConfigWriter.h"
+#include "core/RingCoverage.h"
 
+#include <cstdio>
 #include <cstring>
 #include <iostream>
 
@@ -28,7 +30,18 @@ int check(const char* path)
         std::cerr << "error: " << load.error->toString() << "\n";
         return 1;
     }
-    std::cout << path << ": OK (" << load.warnings.size() << " warning(s))\n";
+    std::size_t warnings = load.warnings.size();
+    const double share = omnitune::ringShareInImage(load.config.geometry);
+    if (share < omnitune::kRingMostlyOffImageShare) {
+        char pct[16];
+        std::snprintf(pct, sizeof pct, "%.0f", 100.0 * share);
+        std::cerr << "warning: " << path << ": geometry: only " << pct
+                  << " % of the processed ring (inner_radius to outer_radius around center_x, center_y) lies inside the "
+                  << load.config.geometry.imageWidth << "x" << load.config.geometry.imageHeight
+                  << " image: is the centre or a radius wrong?\n";
+        ++warnings;
+    }
+    std::cout << path << ": OK (" << warnings << " warning(s))\n";
     return 0;
 }
 

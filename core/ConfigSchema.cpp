@@ -1,5 +1,6 @@
 #include "core/ConfigSchema.h"
 
+#include "core/RingCoverage.h"
 #include "core/YamlText.h"
 
 #include <cmath>
@@ -363,6 +364,10 @@ std::vector<ConfigIssue> checkConfig(const Config& c, const std::string& file)
     if (c.geometry.centerX >= c.geometry.imageWidth || c.geometry.centerY >= c.geometry.imageHeight)
         inconsistent("geometry.center_x", "the robot centre lies outside the " + std::to_string(c.geometry.imageWidth) + "x" +
                                               std::to_string(c.geometry.imageHeight) + " image");
+    else if (c.geometry.innerRadius < c.geometry.outerRadius && ringShareInImage(c.geometry) <= 0.0)
+        inconsistent("geometry.inner_radius", "the processed ring (inner_radius " + formatNumber(c.geometry.innerRadius) +
+                                                  " to outer_radius " + formatNumber(c.geometry.outerRadius) +
+                                                  " px around the centre) lies entirely outside the image");
     if (!(c.sensors.innerRadius < c.sensors.outerRadius))
         inconsistent("sensors.inner_radius", "inner_radius must be below outer_radius");
     const auto& dm = c.distanceMap;

@@ -117,6 +117,10 @@ private slots:
         schema.replace(QRegularExpression("^schema:\\s*1\\s*$", QRegularExpression::MultilineOption), "schema: 99");
         QVERIFY(schema.contains("schema: 99"));
         QVERIFY(writeBytes(path("schema99.yml"), schema.toUtf8()));
+        QString corner = QString::fromUtf8(config);  // the ring centred on the image corner: 1/4 inside
+        corner.replace(QRegularExpression("(center_[xy]:) [0-9.]+"), "\\1 1");
+        QVERIFY(corner.contains("center_x: 1") && corner.contains("center_y: 1"));
+        QVERIFY(writeBytes(path("corner.yml"), corner.toUtf8()));
         QByteArray junk(8000, '\0');
         for (int i = 0; i < junk.size(); ++i) junk[i] = char((i * 7919 + 13) % 251);
         QVERIFY(writeBytes(path("junk.avi"), junk));
@@ -685,6 +689,15 @@ private slots:
             QCOMPARE(r.errLines().size(), 1);
             QVERIFY2(containsAll(r.errLines()[0], names), qPrintable(r.describe()));
         }
+    }
+
+    // Issue 11: a ring mostly off the image loads (the rim of a mirror may be cut) but is named.
+    void configCheckWarnsRingOffImage()
+    {
+        const Run r = runTool(kConfig, {"--check", path("corner.yml")});
+        QVERIFY2(r.exitedWith(0), qPrintable(r.describe()));
+        QVERIFY2(r.out.contains("OK (1 warning(s))"), qPrintable(r.describe()));
+        QVERIFY2(r.err.contains("processed ring") && r.err.contains("% of the"), qPrintable(r.describe()));
     }
 
     void configDefaultsRecheck()

@@ -217,6 +217,12 @@ private slots:
                                            << ConfigIssueKind::WrongType << "algorithm.method" << "fastest";
         QTest::newRow("boolean as 2") << QByteArray(withKey("hough", "  multiple_maxima: 2\n").c_str())
                                       << ConfigIssueKind::WrongType << "hough.multiple_maxima" << "0/1";
+        // Issue 11: a centre or radii that put the whole processed ring off the image.
+        QTest::newRow("ring off the image")
+            << QByteArray(withKey("geometry", "  center_x: 5\n  center_y: 5\n  inner_radius: 900\n  outer_radius: 1000\n").c_str())
+            << ConfigIssueKind::Inconsistent << "geometry.inner_radius" << "entirely outside the image";
+        QTest::newRow("centre off the image") << QByteArray(withKey("geometry", "  center_x: 700\n").c_str())
+                                              << ConfigIssueKind::Inconsistent << "geometry.center_x" << "outside the 640x480 image";
         QTest::newRow("distance map sizes differ")
             << QByteArray(withKey("distance_map", "  pixel_radii: [0, 10, 20]\n  ground_distances: [0, 1]\n").c_str())
             << ConfigIssueKind::Inconsistent << "distance_map.ground_distances" << "same number";

@@ -1,0 +1,41 @@
+#include "core/RingCoverage.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace omnitune {
+
+namespace {
+
+// Length of the chord of a circle of radius r at vertical offset dy from its centre, clipped
+// to the columns [0, width] (centre at cx).
+double clippedChord(double r, double dy, double cx, double width)
+{
+    if (std::abs(dy) >= r) return 0.0;
+    const double half = std::sqrt(r * r - dy * dy);
+    return std::max(0.0, std::min(cx + half, width) - std::max(cx - half, 0.0));
+}
+
+}  // namespace
+
+double ringShareInImage(const GeometryOptions& g)
+{
+    const double r0 = std::max(0.0, g.innerRadius);
+    const double r1 = g.outerRadius;
+    const double ringArea = M_PI * (r1 * r1 - r0 * r0);
+    if (!(ringArea > 0.0)) return 0.0;
+    // Midpoint rule over the outer circle's rows: 4 samples per pixel row is far finer than
+    // the question ("mostly off the image?") needs.
+    const int steps = std::max(64, int(std::ceil(8.0 * r1)));
+    const double h = 2.0 * r1 / steps;
+    double inside = 0.0;
+    for (int i = 0; i < steps; ++i) {
+        const double y = g.centerY - r1 + (i + 0.5) * h;
+        if (y < 0.0 || y > g.imageHeight) continue;
+        const double dy = y - g.centerY;
+        inside += (clippedChord(r1, dy, g.centerX, g.imageWidth) - clippedChord(r0, dy, g.centerX, g.imageWidth)) * h;
+    }
+    return std::clamp(inside / ringArea, 0.0, 1.0);
+}
+
+}  // namespace omnitune
