@@ -13,6 +13,7 @@
 #include "calib/fit/FitFrames.h"
 #include "calib/fit/FitText.h"
 #include "calib/fit/RimFit.h"
+#include "calib/mask/AutoMask.h"
 #include "calib/session/Session.h"
 #include "calib/session/SessionReader.h"
 #include "calib/source/FrameSourceFactory.h"
@@ -30,7 +31,7 @@ const std::vector<OptionSpec> kOptions = {
     {"config", true, false, "FILE  the config to start from (default: the session's config.yml; rim and\n"
                             "                          distance-map with radius_px points fall back to the defaults)"},
     {"out", true, false, "FILE  where the updated config goes (an existing file is kept as FILE.bak)"},
-    {"frames", true, false, "N     rim: frames used, spread over the input (default 8)"},
+    {"frames", true, false, "N     rim and mask: frames used, spread over the input (default 8 for rim, 16 for mask)"},
     {"margin", true, false, "PX    rim: outer radius this far inside the found rim (default 4)"},
     {"no-body", false, false, "      rim: keep the config's inner radius (fit the rim from one frame)"},
     {"points", true, false, "FILE  distance-map: CSV radius_px,distance_m or x,y,distance_m"},
@@ -39,6 +40,7 @@ const std::vector<OptionSpec> kOptions = {
                                       "                          ball-height correction (default: keep the config's)"},
     {"samples", true, false, "FILE  ball-model: CSV distance_px,radius_px or distance_m,radius_px instead of\n"
                              "                          the session's truth marks"},
+    {"auto", false, false, "      mask: propose the robot's structure from frames in which the robot drives or turns"},
     {"help", false, false, "      this text"},
 };
 
@@ -47,7 +49,8 @@ const char* const kSummary =
     "subcommands:\n"
     "  rim            mirror centre, outer radius (from the rim) and inner radius (from the robot body)\n"
     "  distance-map   image radius -> ground distance from --points\n"
-    "  ball-model     expected ball radius r(d) from the truth marks of the --input session or --samples";
+    "  ball-model     expected ball radius r(d) from the truth marks of the --input session or --samples\n"
+    "  mask --auto    robot mask (body, support rods, reflections): what stays put while the field moves";
 
 int fail(const std::string& why)
 {
@@ -285,6 +288,43 @@ int runBallModel(const CommandLine& cl, const std::string& out)
     return save(*config, out);
 }
 
+int runMask(const CommandLine& cl, const std::string& out)
+{
+    if (!cl.has("auto")) return fail("mask needs --auto (the only way to make a mask here; the window edits it)");
+    if (!cl.has("input")) return fail("mask needs --input: a session or video in which the robot drives or turns");
+    int frameCount = 16;
+    if (auto f = cl.value("frames")) {
+        const auto v = parseInt(*f);
+        if (!v || *v < 1) return fail("--frames must be a positive whole number, not '" + *f + "'");
+        frameCount = *v;
+    }
+    auto opened = openFrameSource(*cl.value("input"));
+    if (!opened.ok()) return fail(opened.error);
+    for (const auto& w : opened.warnings) std::cerr << "warning: " << w << "\n";
+    std::string error;
+    auto config = startingConfig(cl, false, "mask --auto judges pixels inside the mirror ring", error);
+    if (!config) return fail(error);
+    FitFrames frames = readFitFrames(*opened.source, frameCount);
+    for (const auto& w : frames.warnings) std::cerr << "warning: " << w << "\n";
+    if (!frames.ok()) return fail(frames.error->toString());
+    const cv::Size size = frames.images.front().size();
+    const cv::Size geometrySize(config->geometry.imageWidth, config->geometry.imageHeight);
+    if (size != geometrySize)
+        return fail("the config's geometry is for " + sizeText(geometrySize) + " frames but the input holds " +
+                    sizeText(size) + " frames: run 'omnitune-calibrate rim' on it first");
+
+    StderrProgress progress("omnitune-calibrate mask");
+    const AutoMaskResult mask = autoMask(frames.images, config->geometry, ColorLut(config->colors), {}, &progress);
+    if (!mask.ok()) return fail(mask.error->toString());
+    if (config->geometry.maskFile.empty()) config->geometry.maskFile = "mask.png";
+    std::cout << "mask: " << mask.fit.frames << " frame(s) of " << opened.source->description() << "\n"
+              << "  " << mask.fit.regions << " robot region(s), " << fixedText(100.0 * mask.fit.robotShare, 1)
+              << " % of the mirror image; written as " << config->geometry.maskFile
+              << " beside the config (white = process): check it in the window\n";
+    config->mask = mask.fit.mask;
+    return save(*config, out);
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -297,15 +337,16 @@ int main(int argc, char** argv)
         std::cout << usageText("omnitune-calibrate SUBCOMMAND", kSummary, kOptions);
         return 0;
     }
-    if (subcommand != "rim" && subcommand != "distance-map" && subcommand != "ball-model")
+    if (subcommand != "rim" && subcommand != "distance-map" && subcommand != "ball-model" && subcommand != "mask")
         return fail((subcommand.empty() ? std::string("no subcommand") : "unknown subcommand '" + subcommand + "'") +
-                    ": rim, distance-map or ball-model (see --help)");
+                    ": rim, distance-map, ball-model or mask (see --help)");
     if (!cl.error.empty()) return fail(cl.error + " (see --help)");
     if (!cl.has("out")) return fail("--out OUT.yml is required (see --help)");
     const std::string out = *cl.value("out");
     try {
         if (subcommand == "rim") return runRim(cl, out);
         if (subcommand == "distance-map") return runDistanceMap(cl, out);
+        if (subcommand == "mask") return runMask(cl, out);
         return runBallModel(cl, out);
     } catch (const std::exception& e) {
         return fail(e.what());

@@ -250,6 +250,44 @@ private slots:
         QVERIFY2(b.err.contains("starting from the defaults"), qPrintable(b.describe()));
         QVERIFY(QFileInfo::exists(out));
     }
+
+    // The demo robot has no support rods: the auto-mask keeps its field and cuts out its body.
+    void autoMaskOnDemo()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("out.yml");
+        const Run r = calibrate({"mask", "--auto", "--input", kDemo, "--out", out});
+        QVERIFY2(r.cleanExit && r.exitCode == 0, qPrintable(r.describe()));
+        QVERIFY2(r.out.contains("robot region(s)") && r.out.contains("mask.png"), qPrintable(r.out));
+        const omnitune::ConfigLoad load = omnitune::loadConfig(out.toStdString());
+        QVERIFY2(load.ok(), load.ok() ? "" : load.error->toString().c_str());
+        QCOMPARE(QString::fromStdString(load.config.geometry.maskFile), QString("mask.png"));
+        const cv::Mat mask = load.config.mask;
+        QCOMPARE(mask.cols, 640);
+        const auto& g = load.config.geometry;
+        long field = 0, fieldKept = 0, body = 0, bodyCut = 0;
+        for (int y = 0; y < mask.rows; ++y)
+            for (int x = 0; x < mask.cols; ++x) {
+                const double d = std::hypot(x - g.centerX, y - g.centerY);
+                const bool kept = mask.at<std::uint8_t>(y, x) != 0;
+                if (d > g.innerRadius + 6 && d < g.outerRadius - 6) ++field, fieldKept += kept;
+                if (d < g.innerRadius - 6) ++body, bodyCut += !kept;
+            }
+        QVERIFY2(fieldKept > 0.97 * field, qPrintable(QString("%1 of %2 field pixels kept").arg(fieldKept).arg(field)));
+        QVERIFY2(bodyCut > 0.9 * body, qPrintable(QString("%1 of %2 body pixels cut").arg(bodyCut).arg(body)));
+    }
+
+    void autoMaskRefusals()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("out.yml");
+        const Run noAuto = calibrate({"mask", "--input", kDemo, "--out", out});
+        QVERIFY2(noAuto.exitCode == 1 && noAuto.err.contains("mask needs --auto"), qPrintable(noAuto.describe()));
+        const Run one = calibrate({"mask", "--auto", "--input", kDemo + "/frames/000000.png", "--config",
+                                   kDemo + "/config.yml", "--out", out});
+        QVERIFY2(one.exitCode == 1 && one.err.contains("drives or turns"), qPrintable(one.describe()));
+        QVERIFY(!QFileInfo::exists(out));
+    }
 };
 
 QTEST_GUILESS_MAIN(AppCalibrateTest)
