@@ -1,5 +1,7 @@
 #include "app/MainWindow.h"
 
+#include "widgets/CameraSetup.h"
+#include "widgets/CameraSetupBar.h"
 #include "widgets/CandidateTableModel.h"
 #include "widgets/CandidateTableView.h"
 #include "widgets/ConfigFiles.h"
@@ -59,6 +61,9 @@ MainWindow::MainWindow(QWidget* parent)
     configFiles_ = new ConfigFiles(&doc_, notices_, this);
     connect(configFiles_, &ConfigFiles::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
     layout->addWidget(notices_);
+    auto* setupBar = new CameraSetupBar(this);
+    cameraSetup_ = new CameraSetup(&doc_, configFiles_, notices_, setupBar, this);
+    layout->addWidget(setupBar);
     layout->addWidget(view_, 1);
     auto* resultRow = new QHBoxLayout;
     resultRow->addWidget(resultLabel_, 1);
@@ -235,6 +240,12 @@ void MainWindow::buildMenus()
         a->setShortcut(keys[i].first);
     }
 
+    QMenu* camera = menuBar()->addMenu(tr("&Camera"));
+    setUpCameraAction_ = camera->addAction(tr("&Set up this camera (centre, rim, body, mask)"), cameraSetup_, &CameraSetup::setUp);
+    setUpCameraAction_->setObjectName("setUpCamera");
+    setUpCameraAction_->setStatusTip(tr("Fit the mirror centre, rim and robot body and propose a mask from frames of the open source"));
+    setUpCameraAction_->setEnabled(false);  // until a source is open
+
     QMenu* session = menuBar()->addMenu(tr("&Session"));
     applyToSessionAction_ = session->addAction(tr("&Apply to whole session"), this, &MainWindow::applyToSession,
                                                QKeySequence(Qt::CTRL + Qt::Key_R));
@@ -272,6 +283,8 @@ bool MainWindow::openSource(const QString& path)
     source_ = std::move(opened.source);
     sourcePath_ = path;  // Apply to whole session re-opens it in a thread of its own
     applyToSessionAction_->setEnabled(true);
+    setUpCameraAction_->setEnabled(true);
+    cameraSetup_->setSource(path);
     if (sweepPanel_) sweepPanel_->reset();  // its results belong to the previous source
     nav_->setFrameCount(source_->frameCount());
     nav_->setFrameRate(doc_.config().camera.frameRate);
@@ -385,6 +398,9 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
         const QString text = run->frameUnreadable ? tr("Frame %1 skipped: %2").arg(run->frameIndex).arg(why)
                                                   : tr("Frame %1 not processed: %2").arg(run->frameIndex).arg(why);
         view_->showUnprocessed(*run, text);
+        const cv::Size configSize(run->config.geometry.imageWidth, run->config.geometry.imageHeight);
+        if (!run->frameUnreadable && !run->frame.empty() && run->frame.size() != configSize)
+            cameraSetup_->frameSizeMismatch(run->frame.size());
         candidates_->clear();
         // Short here (one line under the panes); the whole reason is on pane 1 and in the tooltip.
         resultLabel_->setText(run->frameUnreadable ? tr("Frame %1 skipped: it cannot be read (pane 1 says why)").arg(run->frameIndex)

@@ -16,6 +16,7 @@ class QLabel;
 
 namespace omnitune {
 
+class CameraSetup;
 class CandidateTableModel;
 class ConfigFiles;
 class FrameNavigator;
@@ -49,6 +50,7 @@ public:
     NoticeBar* notices() const { return notices_; }
     ThresholdPanel* thresholdPanel() const { return panel_; }
     RecoveryFile* recovery() const { return recovery_; }
+    CameraSetup* cameraSetup() const { return cameraSetup_; }
     CandidateTableModel* candidates() const { return candidates_; }
     std::shared_ptr<const PipelineRun> lastRun() const { return lastRun_; }
     bool isProcessing() const;
@@ -94,6 +96,8 @@ private:
     NoticeBar* notices_ = nullptr;
     ConfigFiles* configFiles_ = nullptr;  // open, save, ask; which config a source gets
     RecoveryFile* recovery_ = nullptr;  // keeps unsaved config edits through a crash
+    CameraSetup* cameraSetup_ = nullptr;  // a camera the config does not fit yet
+    QAction* setUpCameraAction_ = nullptr;
     QLabel* resultLabel_;
     QLabel* truthLabel_;
     QLabel* timingLabel_;

@@ -12,6 +12,7 @@
 #include "calib/fit/DistanceMapFit.h"
 #include "calib/fit/FitFrames.h"
 #include "calib/fit/FitText.h"
+#include "calib/fit/MirrorFit.h"
 #include "calib/fit/RimFit.h"
 #include "calib/mask/AutoMask.h"
 #include "calib/session/Session.h"
@@ -131,21 +132,16 @@ int runRim(const CommandLine& cl, const std::string& out)
     for (const auto& w : frames.warnings) std::cerr << "warning: " << w << "\n";
     if (!frames.ok()) return fail(frames.error->toString());
     const cv::Size size = frames.images.front().size();
-    if (!config->mask.empty() && config->mask.size() != size)
-        return fail("the config's mask " + config->geometry.maskFile + " is " + sizeText(config->mask.size()) +
-                    " but the frames are " + sizeText(size) + ": make a mask for this camera or drop mask_file");
-
     StderrProgress progress("omnitune-calibrate rim");
-    const RimFitResult rim = fitRim(frames.images, rimOptions, &progress);
-    if (!rim.ok()) return fail(rim.error->toString());
-    std::optional<BodyFit> body;
-    if (!cl.has("no-body")) {
-        const BodyFitResult b = fitBody(frames.images, rim.fit.centre, rim.fit.rimRadius, {}, &progress);
-        if (!b.ok()) return fail(b.error->toString() + " (or give --no-body to fit only the rim)");
-        body = b.fit;
-    }
-
-    const RimFit& r = rim.fit;
+    const MirrorFitResult mirror = fitMirror(frames.images, *config, rimOptions, !cl.has("no-body"), &progress);
+    if (!mirror.ok())
+        return fail(mirror.error->toString() +
+                    (mirror.error->kind == FitErrorKind::TooFewFrames || mirror.error->kind == FitErrorKind::StaticField
+                         ? " (or give --no-body to fit only the rim)"
+                         : ""));
+    for (const auto& line : mirror.adapted) std::cerr << "note: adapted to these frames first: " << line << "\n";
+    const std::optional<BodyFit>& body = mirror.body;
+    const RimFit& r = mirror.rim;
     const cv::Size oldSize(config->geometry.imageWidth, config->geometry.imageHeight);
     std::cout << "rim: " << frames.images.size() << " frame(s) of " << opened.source->description() << ", "
               << sizeText(size) << (oldSize != size ? " (the config had " + sizeText(oldSize) + ")" : std::string()) << "\n"
@@ -165,8 +161,7 @@ int runRim(const CommandLine& cl, const std::string& out)
     else
         std::cout << "  inner radius  " << fixedText(config->geometry.innerRadius, 2) << " px (kept: --no-body)\n";
 
-    applyRimFit(r, size, config->geometry);
-    if (body) config->geometry.innerRadius = body->innerRadius;
+    config = mirror.config;
     const auto& sensors = config->sensors;
     // A pixel either way is no fault worth a note; a sensor ray into the housing is.
     if (sensors.innerRadius < config->geometry.innerRadius - 1 || sensors.outerRadius > config->geometry.outerRadius + 1)

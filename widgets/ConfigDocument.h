@@ -31,6 +31,9 @@ public:
     // refused and its message returned. No-op (and no undo entry) when the value is the same.
     std::optional<QString> setValue(const QString& key, const ConfigValue& value);
     ConfigValue value(const QString& key) const;
+    // Replaces the whole config (keys and mask) as one undo step named `text` ("Fit mirror rim"),
+    // checked as a whole; refused with the first problem's message.
+    std::optional<QString> replaceConfig(const Config& next, const QString& text);
 
     // Replaces the config with the file's; on error returns the message (file, key, fault) and
     // changes nothing. Warnings (missing keys, ...) are returned through `warnings`.
@@ -47,6 +50,7 @@ public:
 
     // Applied by the undo commands; not for editors.
     void applyValue(const QString& key, const ConfigValue& value);
+    void applyConfig(const Config& config);
 
 signals:
     void changed(const QString& key);  // empty key: everything may have changed

@@ -23,10 +23,13 @@ bool ConfigFiles::open(const QString& path)
         return false;
     }
     sessionConfigPath_.clear();
+    builtInDefaults_ = false;
     notices_->add(tr("Config %1 loaded with warnings (omnitune-config --upgrade FILE writes the missing keys):").arg(path),
                   warnings);
     return true;
 }
+
+bool ConfigFiles::showsBuiltInDefaults() const { return builtInDefaults_ && doc_->path().isEmpty(); }
 
 bool ConfigFiles::openSessionConfig(const QString& path)
 {
@@ -62,6 +65,7 @@ bool ConfigFiles::save()
         QMessageBox::critical(window_, tr("Cannot save the config"), *err);
         return false;
     }
+    builtInDefaults_ = false;
     emit message(tr("Saved %1 (the file as it was before your first save is kept as .bak)").arg(doc_->path()));
     return true;
 }
@@ -75,6 +79,7 @@ bool ConfigFiles::saveAs()
         QMessageBox::critical(window_, tr("Cannot save the config"), *err);
         return false;
     }
+    builtInDefaults_ = false;
     return true;
 }
 

@@ -36,6 +36,9 @@ public:
     QString choose();
     // For the title bar: the file name, or what a config without a file is.
     QString name() const;
+    // The built-in defaults, never loaded from or saved to a file: adapting them to a new
+    // camera replaces nothing of the user's.
+    bool showsBuiltInDefaults() const;
 
 signals:
     void message(const QString& text);  // for the status bar
@@ -47,6 +50,7 @@ private:
     QString sessionConfigPath_;    // the config.yml the open session brought, while it is the one shown
     QString suggestedPath_;        // where Save As proposes to put a config that has no file
     QString origin_;               // names a config without a file
+    bool builtInDefaults_ = true;  // no config was loaded or saved since the window opened
 };
 
 }  // namespace omnitune

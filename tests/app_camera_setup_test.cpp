@@ -1,0 +1,139 @@
+// Issue 11, "a new camera opens and shows its frames at once": frames of another size than the
+// config's are shown with a provisional geometry at once (defaults) or after "Adapt" (a config
+// of the user's), and "Set up this camera" fits centre, rim, body and a mask from the frames,
+// each step one Ctrl+Z. The camera: the demo session cropped to 480x480, whose mirror is then
+// centred at (240, 240) with its rim at ~240 px and its body at ~48 px.
+#include "app/MainWindow.h"
+#include "core/ConfigWriter.h"
+#include "widgets/CameraSetup.h"
+#include "widgets/CameraSetupBar.h"
+#include "widgets/ConfigDocument.h"
+#include "widgets/NoticeBar.h"
+#include "WindowTestSupport.h"
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <QPushButton>
+#include <QtTest>
+
+using namespace omnitune;
+using namespace omnitune::testing;
+
+namespace {
+
+// The first `count` demo frames, cropped to the 480x480 middle.
+bool writeSquareCamera(const QString& folder, int count)
+{
+    const QString demo = QStringLiteral(OMNITUNE_SOURCE_DIR "/sessions/demo/frames/");
+    for (int i = 0; i < count; ++i) {
+        const QString name = QStringLiteral("%1.png").arg(i * 3, 6, 10, QChar('0'));  // spread over the tour
+        const cv::Mat frame = cv::imread((demo + name).toStdString());
+        if (frame.empty() || !cv::imwrite((folder + "/" + name).toStdString(), frame(cv::Rect(80, 0, 480, 480))))
+            return false;
+    }
+    return true;
+}
+
+// Waits (event driven) until the window shows a processed frame under a config for `size`.
+bool waitForProcessed(MainWindow& window, cv::Size size)
+{
+    QSignalSpy spy(&window, &MainWindow::runShown);
+    for (int i = 0; i < 50; ++i) {
+        const auto run = window.lastRun();
+        if (!window.isProcessing() && run && run->result.ok() && run->error.isEmpty() &&
+            run->config.geometry.imageWidth == size.width && run->config.geometry.imageHeight == size.height)
+            return true;
+        spy.wait(200);
+    }
+    return false;
+}
+
+CameraSetupBar* setupBar(MainWindow& window) { return window.findChild<CameraSetupBar*>(); }
+
+}  // namespace
+
+class CameraSetupTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        isolateRecoveryFiles();
+        QVERIFY(dir_.isValid());
+        QVERIFY(QDir().mkpath(camera()));
+        QVERIFY(writeSquareCamera(camera(), 8));
+    }
+
+    // The defaults replace nothing of the user's: the frames show at once, the bar offers set-up.
+    void defaultsAdaptAtOnceAndSetUpFits()
+    {
+        MainWindow window;
+        window.cameraSetup()->rimFrames = 6;
+        window.cameraSetup()->maskFrames = 8;
+        window.show();
+        QVERIFY(window.openSource(camera()));
+        QVERIFY2(waitForProcessed(window, {480, 480}), "the 480x480 frames were not processed under a provisional geometry");
+        CameraSetupBar* bar = setupBar(window);
+        QVERIFY(bar && bar->isVisible());
+        QVERIFY2(bar->text().contains("provisional geometry"), qPrintable(bar->text()));
+        QVERIFY(bar->setUpButton()->isVisible());
+        QVERIFY(!bar->adaptButton()->isVisible());
+        const GeometryOptions provisional = window.document()->config().geometry;
+        QCOMPARE(provisional.centerX, 239.5);
+        QVERIFY(window.notices()->text().contains("largest circle"));
+
+        QTest::mouseClick(bar->setUpButton(), Qt::LeftButton);
+        const GeometryOptions& g = window.document()->config().geometry;
+        QVERIFY2(std::hypot(g.centerX - 240, g.centerY - 240) < 1.5,
+                 qPrintable(QString("centre %1, %2; %3").arg(g.centerX).arg(g.centerY).arg(bar->text())));
+        QVERIFY2(std::abs(g.innerRadius - 50) < 4, qPrintable(QString::number(g.innerRadius)));
+        QVERIFY2(g.outerRadius > 230 && g.outerRadius < 248, qPrintable(QString::number(g.outerRadius)));
+        QVERIFY2(bar->text().startsWith("Camera set up"), qPrintable(bar->text()));
+        QVERIFY(window.notices()->text().contains("centre ("));
+        QVERIFY(waitForProcessed(window, {480, 480}));
+        if (qEnvironmentVariableIsSet("OMNITUNE_SCREENSHOT_DIR"))  // to look at the window after set-up
+            window.grab().save(qEnvironmentVariable("OMNITUNE_SCREENSHOT_DIR") + "/camera-setup.png");
+
+        // Each step undoes on its own: mask, then centre and rim, then the provisional geometry.
+        QUndoStack* undo = window.document()->undoStack();
+        const bool masked = !window.document()->config().mask.empty();
+        if (masked) {
+            undo->undo();
+            QVERIFY(window.document()->config().mask.empty());
+        }
+        undo->undo();
+        QCOMPARE(window.document()->config().geometry.centerX, 239.5);
+        undo->undo();
+        QCOMPARE(window.document()->config().geometry.imageWidth, 640);
+        QVERIFY(!window.document()->isDirty());
+    }
+
+    // A config of the user's for 640x480 is not replaced unasked; Adapt makes it fit.
+    void userConfigIsAdaptedOnlyWhenAsked()
+    {
+        const QString file = dir_.filePath("robot.yml");
+        QVERIFY(!saveConfig(Config{}, file.toStdString(), false));
+        MainWindow window;
+        window.show();
+        QVERIFY(window.openConfig(file));
+        QVERIFY(window.openSource(camera()));
+        CameraSetupBar* bar = setupBar(window);
+        QTRY_VERIFY_WITH_TIMEOUT(bar->isVisible(), 10000);
+        QVERIFY2(bar->text().contains("480x480") && bar->text().contains("robot.yml") && bar->text().contains("640x480"),
+                 qPrintable(bar->text()));
+        QCOMPARE(window.document()->config().geometry.imageWidth, 640);
+        QVERIFY(bar->adaptButton()->isVisible());
+        QTest::mouseClick(bar->adaptButton(), Qt::LeftButton);
+        QCOMPARE(window.document()->config().geometry.imageWidth, 480);
+        QVERIFY(window.document()->isDirty());
+        QVERIFY(waitForProcessed(window, {480, 480}));
+        window.document()->discardChanges();  // closing must not ask
+    }
+
+private:
+    QString camera() const { return dir_.filePath("square"); }
+    QTemporaryDir dir_;
+};
+
+QTEST_MAIN(CameraSetupTest)
+#include "app_camera_setup_test.moc"
