@@ -15,10 +15,15 @@
 #include "calib/fit/MirrorFit.h"
 #include "calib/fit/RimFit.h"
 #include "calib/mask/AutoMask.h"
+#include "calib/mask/MaskImport.h"
 #include "calib/session/Session.h"
 #include "calib/session/SessionReader.h"
 #include "calib/source/FrameSourceFactory.h"
 #include "core/ConfigWriter.h"
+#include "core/RegularFile.h"
+#include "core/RingCoverage.h"
+
+#include <opencv2/imgcodecs.hpp>
 
 #include <filesystem>
 #include <iostream>
@@ -42,6 +47,8 @@ const std::vector<OptionSpec> kOptions = {
     {"samples", true, false, "FILE  ball-model: CSV distance_px,radius_px or distance_m,radius_px instead of\n"
                              "                          the session's truth marks"},
     {"auto", false, false, "      mask: propose the robot's structure from frames in which the robot drives or turns"},
+    {"import", true, false, "FILE  mask: convert a mask image made elsewhere (needs --config or a session's)"},
+    {"process", true, false, "SIDE  mask --import: white (bright, any colour, = process; the default) or black"},
     {"help", false, false, "      this text"},
 };
 
@@ -51,7 +58,8 @@ const char* const kSummary =
     "  rim            mirror centre, outer radius (from the rim) and inner radius (from the robot body)\n"
     "  distance-map   image radius -> ground distance from --points\n"
     "  ball-model     expected ball radius r(d) from the truth marks of the --input session or --samples\n"
-    "  mask --auto    robot mask (body, support rods, reflections): what stays put while the field moves";
+    "  mask --auto    robot mask (body, support rods, reflections): what stays put while the field moves\n"
+    "  mask --import  a mask made elsewhere, in OmniTune's convention (white = process)";
 
 int fail(const std::string& why)
 {
@@ -283,9 +291,51 @@ int runBallModel(const CommandLine& cl, const std::string& out)
     return save(*config, out);
 }
 
+// The imported mask's share of the ring, and a warning when it leaves most of it out.
+void describeMask(const std::string& what, double processedShare)
+{
+    std::cout << "mask: " << what << "; " << fixedText(100.0 * processedShare, 1)
+              << " % of the ring between inner_radius and outer_radius is processed\n";
+    if (processedShare < kRingMostlyOffImageShare)
+        std::cerr << "warning: the mask leaves most of the ring out: if the file means the other side, give --process "
+                  << "the other colour\n";
+}
+
+int runMaskImport(const CommandLine& cl, const std::string& out)
+{
+    const std::string file = *cl.value("import");
+    MaskConvention convention = MaskConvention::BrightProcesses;
+    if (auto p = cl.value("process")) {
+        if (*p == "black")
+            convention = MaskConvention::DarkProcesses;
+        else if (*p != "white")
+            return fail("--process must be white or black, not '" + *p + "'");
+    }
+    std::string error;
+    auto config = startingConfig(cl, false, "mask --import needs the camera's geometry", error);
+    if (!config) return fail(error);
+    cv::Mat image;
+    if (const auto notRegular = checkRegularFile(file)) return fail(file + ": " + *notRegular);
+    try {
+        image = cv::imread(file, cv::IMREAD_UNCHANGED);
+    } catch (const cv::Exception&) {
+        image.release();
+    }
+    if (image.empty()) return fail(file + ": cannot read it as an image");
+    const MaskImportResult imported = importMask(image, convention, config->geometry);
+    if (!imported.ok()) return fail(file + ": " + imported.error->toString());
+    if (config->geometry.maskFile.empty()) config->geometry.maskFile = "mask.png";
+    describeMask(file + " with " + (convention == MaskConvention::DarkProcesses ? "black" : "white") +
+                     " = process, written as " + config->geometry.maskFile + " beside the config",
+                 imported.fit.processedShare);
+    config->mask = imported.fit.mask;
+    return save(*config, out);
+}
+
 int runMask(const CommandLine& cl, const std::string& out)
 {
-    if (!cl.has("auto")) return fail("mask needs --auto (the only way to make a mask here; the window edits it)");
+    if (cl.has("import")) return runMaskImport(cl, out);
+    if (!cl.has("auto")) return fail("mask needs --auto (from frames) or --import FILE (a mask made elsewhere)");
     if (!cl.has("input")) return fail("mask needs --input: a session or video in which the robot drives or turns");
     int frameCount = 16;
     if (auto f = cl.value("frames")) {

@@ -2,11 +2,13 @@
 
 #include "core/ConfigSchema.h"
 #include "core/RegularFile.h"
+#include "core/RingCoverage.h"
 #include "core/YamlText.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include <cstdio>
 #include <filesystem>
 #include <set>
 
@@ -178,7 +180,21 @@ ConfigLoad loadConfig(const std::string& path)
     }
     out.config.mask = mask;
     const auto problems = checkConfig(out.config, path);
-    if (!problems.empty()) out.error = problems.front();
+    if (!problems.empty()) {
+        out.error = problems.front();
+        return out;
+    }
+    // A mask of the opposite convention (black = process) loads as "almost nothing processed":
+    // say so instead of letting every pane go quiet.
+    if (const double share = maskProcessedShare(mask, out.config.geometry); share < kRingMostlyOffImageShare) {
+        char pct[16];
+        std::snprintf(pct, sizeof pct, "%.0f", 100.0 * share);
+        out.warnings.push_back(ConfigIssue{
+            ConfigIssueKind::MaskError, path, 0, "geometry.mask_file",
+            "the mask " + maskPath + " lets only " + pct +
+                " % of the ring between inner_radius and outer_radius be processed (white = process); if it was made "
+                "the other way round, convert it: omnitune-calibrate mask --import FILE --process black"});
+    }
     return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace omnitune {
 
@@ -36,6 +37,24 @@ double ringShareInImage(const GeometryOptions& g)
         inside += (clippedChord(r1, dy, g.centerX, g.imageWidth) - clippedChord(r0, dy, g.centerX, g.imageWidth)) * h;
     }
     return std::clamp(inside / ringArea, 0.0, 1.0);
+}
+
+double maskProcessedShare(const cv::Mat& mask, const GeometryOptions& g)
+{
+    if (mask.empty()) return 1.0;
+    const double r0 = g.innerRadius * g.innerRadius, r1 = g.outerRadius * g.outerRadius;
+    long ring = 0, processed = 0;
+    for (int y = 0; y < mask.rows; ++y) {
+        const std::uint8_t* m = mask.ptr<std::uint8_t>(y);
+        const double dy = y - g.centerY;
+        for (int x = 0; x < mask.cols; ++x) {
+            const double dx = x - g.centerX, d2 = dx * dx + dy * dy;
+            if (d2 < r0 || d2 > r1) continue;
+            ++ring;
+            processed += m[x] != 0;
+        }
+    }
+    return ring > 0 ? double(processed) / double(ring) : 1.0;
 }
 
 }  // namespace omnitune

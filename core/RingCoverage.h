@@ -11,7 +11,12 @@ namespace omnitune {
 // ring of no area.
 double ringShareInImage(const GeometryOptions& geometry);
 
-// Below this share --check warns that the used ring is mostly off the image.
+// Share 0..1 of the ring's pixels inside the image that `mask` (CV_8UC1, non-zero = process,
+// the geometry's image size) lets through; 1 for an empty mask.
+double maskProcessedShare(const cv::Mat& mask, const GeometryOptions& geometry);
+
+// Below this share --check warns that the used ring is mostly off the image, and the config
+// loader that a mask leaves most of the ring out (a mask of the opposite convention).
 inline constexpr double kRingMostlyOffImageShare = 0.5;
 
 }  // namespace omnitune

@@ -277,12 +277,49 @@ private slots:
         QVERIFY2(bodyCut > 0.9 * body, qPrintable(QString("%1 of %2 body pixels cut").arg(bodyCut).arg(body)));
     }
 
+    // Issue 11: another team's mask, red rods on black (black = process), imported both ways.
+    void importedMaskConventions()
+    {
+        QTemporaryDir dir;
+        const QString file = dir.filePath("their-mask.png");
+        cv::Mat theirs(480, 640, CV_8UC3, cv::Scalar(0, 0, 0));
+        theirs.colRange(318, 323).setTo(cv::Scalar(0, 0, 255));  // a red rod through the centre
+        QVERIFY(cv::imwrite(file.toStdString(), theirs));
+        const QString out = dir.filePath("out.yml");
+        const QString config = kDemo + "/config.yml";
+
+        const Run wrong = calibrate({"mask", "--import", file, "--config", config, "--out", out});
+        QVERIFY2(wrong.exitCode == 0, qPrintable(wrong.describe()));
+        QVERIFY2(wrong.err.contains("leaves most of the ring out"), qPrintable(wrong.describe()));
+        const omnitune::ConfigLoad reversed = omnitune::loadConfig(out.toStdString());
+        QVERIFY(reversed.ok());
+        bool warned = false;  // the loader says it too, every time the config is opened
+        for (const auto& w : reversed.warnings) warned |= w.message.find("--process black") != std::string::npos;
+        QVERIFY(warned);
+
+        const Run right = calibrate({"mask", "--import", file, "--process", "black", "--config", config, "--out", out});
+        QVERIFY2(right.exitCode == 0 && !right.err.contains("leaves most"), qPrintable(right.describe()));
+        QVERIFY2(right.out.contains("black = process") && right.out.contains("% of the ring"), qPrintable(right.out));
+        const omnitune::ConfigLoad load = omnitune::loadConfig(out.toStdString());
+        QVERIFY(load.ok());
+        QVERIFY(load.warnings.empty());
+        QCOMPARE(int(load.config.mask.at<std::uint8_t>(100, 320)), 0);    // the rod: not processed
+        QCOMPARE(int(load.config.mask.at<std::uint8_t>(100, 200)), 255);  // the field
+
+        const Run bad = calibrate({"mask", "--import", file, "--process", "red", "--config", config, "--out", out});
+        QVERIFY2(bad.exitCode == 1 && bad.err.contains("--process must be white or black"), qPrintable(bad.describe()));
+        cv::Mat small(100, 100, CV_8UC1, cv::Scalar(255));
+        QVERIFY(cv::imwrite(dir.filePath("small.png").toStdString(), small));
+        const Run size = calibrate({"mask", "--import", dir.filePath("small.png"), "--config", config, "--out", out});
+        QVERIFY2(size.exitCode == 1 && size.err.contains("100x100") && size.err.contains("640x480"), qPrintable(size.describe()));
+    }
+
     void autoMaskRefusals()
     {
         QTemporaryDir dir;
         const QString out = dir.filePath("out.yml");
         const Run noAuto = calibrate({"mask", "--input", kDemo, "--out", out});
-        QVERIFY2(noAuto.exitCode == 1 && noAuto.err.contains("mask needs --auto"), qPrintable(noAuto.describe()));
+        QVERIFY2(noAuto.exitCode == 1 && noAuto.err.contains("mask needs --auto (from frames) or --import"), qPrintable(noAuto.describe()));
         const Run one = calibrate({"mask", "--auto", "--input", kDemo + "/frames/000000.png", "--config",
                                    kDemo + "/config.yml", "--out", out});
         QVERIFY2(one.exitCode == 1 && one.err.contains("drives or turns"), qPrintable(one.describe()));
