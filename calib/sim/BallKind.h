@@ -15,6 +15,9 @@ enum class BallKind {
     WhiteBlackGreen,  // ball 3: white hexagons, black pentagons, a few small green patches
     MostlyBlue,       // ball 4: blue (not team cyan) hexagons, white pentagons
     WhiteRed,         // ball 5: white with red panels
+    // Not in the thesis; balls teams meet today (issue 9).
+    GreenWhite,       // white hexagons, green pentagons and every third hexagon green (~45 % green)
+    YellowWhite,      // yellow hexagons, white pentagons (a yellow ball, hue ~27: not orange)
 };
 
 inline constexpr std::array<BallKind, 5> kAllBallKinds = {
