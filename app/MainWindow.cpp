@@ -412,6 +412,7 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
     auto overlay = std::make_shared<OverlayData>();
     overlay->config = run->config;
     overlay->maskOutline = run->maskOutline;
+    overlay->maskTint = run->maskTint;
     overlay->candidates = run->result.candidates;
     overlay->detection = run->result.detection;
     view_->showRun(*run, overlay);

@@ -9,6 +9,7 @@
 #include "widgets/CameraSetupBar.h"
 #include "widgets/ConfigDocument.h"
 #include "widgets/NoticeBar.h"
+#include "widgets/PipelineRunner.h"
 #include "WindowTestSupport.h"
 
 #include <opencv2/imgcodecs.hpp>
@@ -94,13 +95,19 @@ private slots:
         if (qEnvironmentVariableIsSet("OMNITUNE_SCREENSHOT_DIR"))  // to look at the window after set-up
             window.grab().save(qEnvironmentVariable("OMNITUNE_SCREENSHOT_DIR") + "/camera-setup.png");
 
+        // The mask is tinted over every pane: the body is, the field is not.
+        QVERIFY2(!window.document()->config().mask.empty(), qPrintable(window.notices()->text()));
+        {
+            const auto tint = window.lastRun()->maskTint;
+            QVERIFY(tint);
+            QVERIFY(qAlpha(tint->pixel(240, 240)) > 0);
+            QCOMPARE(qAlpha(tint->pixel(240, 120)), 0);
+        }
+
         // Each step undoes on its own: mask, then centre and rim, then the provisional geometry.
         QUndoStack* undo = window.document()->undoStack();
-        const bool masked = !window.document()->config().mask.empty();
-        if (masked) {
-            undo->undo();
-            QVERIFY(window.document()->config().mask.empty());
-        }
+        undo->undo();
+        QVERIFY(window.document()->config().mask.empty());
         undo->undo();
         QCOMPARE(window.document()->config().geometry.centerX, 239.5);
         undo->undo();

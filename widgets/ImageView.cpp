@@ -116,6 +116,10 @@ void ImageView::paintOverlay(QPainter& p) const
         const QPointF w = toWidget(centre);
         p.drawLine(w - QPointF(6, 0), w + QPointF(6, 0));
         p.drawLine(w - QPointF(0, 6), w + QPointF(0, 6));
+        if (overlay_->maskTint && !image_.isNull()) {
+            const QImage& tint = *overlay_->maskTint;
+            p.drawImage(QRectF(toWidget(QPointF(0, 0)), toWidget(QPointF(tint.width(), tint.height()))), tint);
+        }
         if (overlay_->maskOutline) {
             p.setPen(QPen(overlay_colour::maskOutline(), 1));
             for (const auto& line : *overlay_->maskOutline) {

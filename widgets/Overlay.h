@@ -6,6 +6,7 @@
 #include "core/PipelineResult.h"
 
 #include <QColor>
+#include <QImage>
 
 #include <memory>
 #include <vector>
@@ -16,6 +17,7 @@ namespace omnitune {
 namespace overlay_colour {
 inline QColor geometry() { return QColor(255, 255, 0, 200); }      // robot centre, inner and outer radius
 inline QColor maskOutline() { return QColor(255, 160, 0, 220); }
+inline QColor maskTint() { return QColor(255, 120, 0, 80); }      // pixels the mask leaves out
 inline QColor areas() { return QColor(0, 200, 255, 160); }        // radial area bounds, dashed
 inline QColor sensors() { return QColor(255, 255, 255, 90); }
 inline QColor accepted() { return QColor(0, 255, 0); }             // accepted candidate and ball
@@ -45,6 +47,7 @@ struct TruthOverlay {
 struct OverlayData {
     Config config;                        // geometry, areas, ball model, sensors of the run
     std::shared_ptr<const Polylines> maskOutline;  // border of config.mask; null or empty: none
+    std::shared_ptr<const QImage> maskTint;        // config.mask's unprocessed pixels, tinted; null: none
     std::vector<BallCandidate> candidates;
     BallDetection detection;
 };

@@ -12,7 +12,7 @@ namespace omnitune {
 
 namespace {
 
-enum class Swatch { Ring, DashedRing, DottedRing, ThickRing, Cross, Line };
+enum class Swatch { Ring, DashedRing, DottedRing, ThickRing, Cross, Line, Fill };
 
 // The mark as the panes draw it, small.
 QPixmap swatch(Swatch kind, const QColor& colour)
@@ -29,6 +29,7 @@ QPixmap swatch(Swatch kind, const QColor& colour)
         p.drawLine(14, 4, 14, 16);
         break;
     case Swatch::Line: p.drawLine(3, 16, 25, 4); break;
+    case Swatch::Fill: p.fillRect(QRectF(4, 3, 20, 14), colour); break;
     default: p.drawEllipse(QPointF(14, 10), 7, 7); break;
     }
     return pixmap;
@@ -47,6 +48,7 @@ OverlayLegend::OverlayLegend(QWidget* parent) : QWidget(parent)
     const Row rows[] = {
         {Swatch::Cross, overlay_colour::geometry(), tr("Robot centre; the yellow rings are the inner and outer mask radius")},
         {Swatch::Line, overlay_colour::maskOutline(), tr("Mask outline (pixels never processed)")},
+        {Swatch::Fill, overlay_colour::maskTint(), tr("Masked: robot body, rods (never processed)")},
         {Swatch::DashedRing, overlay_colour::areas(), tr("Radial area bounds of the specific Hough (A1 innermost)")},
         {Swatch::Line, overlay_colour::sensors(), tr("Radial sensor rays (off by default, View menu)")},
         {Swatch::ThickRing, overlay_colour::accepted(), tr("Accepted ball, labelled with its field position in metres")},

@@ -1,6 +1,7 @@
 #include "widgets/PipelineRunner.h"
 
 #include "core/Pipeline.h"
+#include "widgets/MaskTint.h"
 
 #include <QMutex>
 
@@ -81,10 +82,12 @@ private:
             if (!pipeline_ || generation_ != r.generation) {
                 pipeline_.reset();  // a config that cannot be built leaves no stale pipeline
                 outline_ = std::make_shared<const Polylines>(maskOutline(r.config.mask));
+                tint_ = maskTint(r.config.mask);
                 pipeline_ = std::make_unique<Pipeline>(r.config);
                 generation_ = r.generation;
             }
             run->maskOutline = outline_;
+            run->maskTint = tint_;
             pipeline_->process(frame_.image, frame_.format, run->result, true);
         } catch (const std::exception& e) {
             run->error = QString::fromStdString(e.what());  // the pipeline itself stays usable
@@ -99,6 +102,7 @@ private:
     std::unique_ptr<Pipeline> pipeline_;
     quint64 generation_ = 0;
     std::shared_ptr<const Polylines> outline_;
+    std::shared_ptr<const QImage> tint_;
     std::shared_ptr<FrameSource> source_;
     Frame frame_;  // the last frame decoded from source_
 };

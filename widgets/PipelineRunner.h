@@ -8,6 +8,7 @@
 #include "core/PipelineResult.h"
 #include "core/PixelFormat.h"
 
+#include <QImage>
 #include <QObject>
 #include <QThread>
 
@@ -22,6 +23,7 @@ struct PipelineRun {
     PixelFormat format = PixelFormat::Bgr8;
     Config config;            // the config this run used (overlays and the inspector use it)
     std::shared_ptr<const Polylines> maskOutline;  // of config.mask; empty without a mask
+    std::shared_ptr<const QImage> maskTint;        // config.mask's unprocessed pixels tinted; null without a mask
     PipelineResult result;    // with the five stage images
     QString error;            // the frame could not be read or the config used (result then empty)
     bool frameUnreadable = false;  // `error` is about the frame, not the config
