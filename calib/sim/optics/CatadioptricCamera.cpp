@@ -18,12 +18,15 @@ double mirrorHitRadius(const MirrorProfile& mirror, double vertex, double tanThe
     const double rim = mirror.rimRadius();
     auto f = [&](double r) { return r - tanTheta * (vertex + mirror.height(r)); };
     if (f(rim) < 0) return -1.0;  // still below the mirror surface at the rim: misses it
-    double lo = 0.0, hi = rim;
-    for (int i = 0; i < 32; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (f(mid) < 0 ? lo : hi) = mid;
+    // f rises and is concave (the mirror curves up), and f(tan * vertex) <= 0: Newton from there
+    // approaches the root from the left without overshooting.
+    double r = std::min(tanTheta * vertex, rim);
+    for (int i = 0; i < 12; ++i) {
+        const double step = f(r) / std::max(1.0 - tanTheta * mirror.slope(r), 1e-6);
+        r = std::clamp(r - step, 0.0, rim);
+        if (std::abs(step) < 1e-10) break;
     }
-    return 0.5 * (lo + hi);
+    return r;
 }
 
 cv::Vec3d reflect(const cv::Vec3d& d, const cv::Vec3d& n) { return d - 2.0 * d.dot(n) * n; }
