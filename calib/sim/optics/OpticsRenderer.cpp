@@ -350,10 +350,12 @@ void OpticsRenderer::drawBall(const OpticsScene& scene, const Frame& frame, cv::
     const double dist = std::max(truth.distanceM, 1e-6);
     const cv::Vec3d radial(B[0] / dist, B[1] / dist, 0), tangential(-B[1] / dist, B[0] / dist, 0);
     std::vector<cv::Point2d> corners;
+    const auto centrePx = camera_.project({B[0], B[1], B[2]});
+    if (!centrePx) return;
     for (const cv::Vec3d& off : {cv::Vec3d(0, 0, 0), radial * R, -radial * R, tangential * R, -tangential * R,
                                  cv::Vec3d(0, 0, R), cv::Vec3d(0, 0, -R * 0.999)}) {
         const cv::Vec3d q = B + off;
-        if (auto p = camera_.project({q[0], q[1], q[2]})) corners.push_back(*p);
+        if (auto p = camera_.project({q[0], q[1], q[2]}, *centrePx)) corners.push_back(*p);
     }
     if (corners.size() < 3) return;
     double bx0 = corners[0].x, by0 = corners[0].y, bx1 = bx0, by1 = by0;
