@@ -163,7 +163,10 @@ MeasuredCalibration calibrateFromMeasurements(const Config& base, const CameraMe
     const GeometryOptions defaults;
     const double inner0 = defaults.innerRadius, outer0 = defaults.outerRadius;
     const double inner = c.geometry.innerRadius, outer = c.geometry.outerRadius;
-    auto rescale = [&](double v) { return inner + (v - inner0) * (outer - inner) / (outer0 - inner0); };
+    // To 0.1 px: a tenth is far below what a radial area's edge means, and the panel stays readable.
+    auto rescale = [&](double v) {
+        return std::round(10.0 * (inner + (v - inner0) * (outer - inner) / (outer0 - inner0))) / 10.0;
+    };
     for (double& b : c.hough.areaBounds) b = rescale(b);
     if (!c.hough.areaBounds.empty()) c.hough.areaBounds.back() = outer;
     c.hough.nearRobotRadius = std::max(0.0, rescale(c.hough.nearRobotRadius));
