@@ -6,6 +6,7 @@
 #include "widgets/CandidateTableView.h"
 #include "widgets/ConfigFiles.h"
 #include "widgets/FrameNavigator.h"
+#include "widgets/GeometryEditor.h"
 #include "calib/source/FrameSourceFactory.h"
 #include "widgets/MarkedSlider.h"
 #include "widgets/NoticeBar.h"
@@ -241,6 +242,17 @@ void MainWindow::buildMenus()
     }
 
     QMenu* camera = menuBar()->addMenu(tr("&Camera"));
+    geometryEditor_ = new GeometryEditor(&doc_, view_, this);
+    geometryEditor_->fillMenu(camera);
+    connect(geometryEditor_, &GeometryEditor::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
+    // The left button belongs to one of them: marking truth or dragging the geometry.
+    connect(geometryEditor_, &GeometryEditor::editingChanged, this, [this](bool on) {
+        if (on && marker_->isMarking()) marker_->setMarking(false);
+    });
+    connect(marker_, &TruthMarker::markingChanged, this, [this](bool on) {
+        if (on) geometryEditor_->setEditing(false);
+    });
+    camera->addSeparator();
     setUpCameraAction_ = camera->addAction(tr("&Set up this camera (centre, rim, body, mask)"), cameraSetup_, &CameraSetup::setUp);
     setUpCameraAction_->setObjectName("setUpCamera");
     setUpCameraAction_->setStatusTip(tr("Fit the mirror centre, rim and robot body and propose a mask from frames of the open source"));
@@ -301,6 +313,7 @@ void MainWindow::clearForNewSource()
     // Nothing of the previous source may stay on screen under the new title: panes, overlays,
     // table and labels are emptied now, and runs of the old source still in flight are dropped.
     ++sourceTag_;
+    geometryEditor_->setEditing(false);  // the marker gives up the left button too (TruthMarker::reset)
     source_.reset();  // a config loaded (or restored) before the new source is set runs nothing old
     lastRun_.reset();
     marker_->setRun(nullptr);

@@ -20,6 +20,7 @@ class CameraSetup;
 class CandidateTableModel;
 class ConfigFiles;
 class FrameNavigator;
+class GeometryEditor;
 class NoticeBar;
 class PipelineView;
 class SessionSweepPanel;
@@ -51,6 +52,7 @@ public:
     ThresholdPanel* thresholdPanel() const { return panel_; }
     RecoveryFile* recovery() const { return recovery_; }
     CameraSetup* cameraSetup() const { return cameraSetup_; }
+    GeometryEditor* geometryEditor() const { return geometryEditor_; }
     CandidateTableModel* candidates() const { return candidates_; }
     std::shared_ptr<const PipelineRun> lastRun() const { return lastRun_; }
     bool isProcessing() const;
@@ -98,6 +100,7 @@ private:
     RecoveryFile* recovery_ = nullptr;  // keeps unsaved config edits through a crash
     CameraSetup* cameraSetup_ = nullptr;  // a camera the config does not fit yet
     QAction* setUpCameraAction_ = nullptr;
+    GeometryEditor* geometryEditor_ = nullptr;  // drag centre and radii, nudge the centre
     QLabel* resultLabel_;
     QLabel* truthLabel_;
     QLabel* timingLabel_;

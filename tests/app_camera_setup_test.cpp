@@ -8,6 +8,10 @@
 #include "widgets/CameraSetup.h"
 #include "widgets/CameraSetupBar.h"
 #include "widgets/ConfigDocument.h"
+#include "widgets/GeometryEditor.h"
+#include "widgets/ImageView.h"
+#include "widgets/PipelineView.h"
+#include "widgets/TruthMarker.h"
 #include "widgets/NoticeBar.h"
 #include "widgets/PipelineRunner.h"
 #include "WindowTestSupport.h"
@@ -15,6 +19,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include <QPushButton>
+#include <QStatusBar>
 #include <QtTest>
 
 using namespace omnitune;
@@ -135,6 +140,63 @@ private slots:
         QVERIFY(window.document()->isDirty());
         QVERIFY(waitForProcessed(window, {480, 480}));
         window.document()->discardChanges();  // closing must not ask
+    }
+
+    // Dragging the centre and a radius on a pane, and the Alt+arrow nudge: each one undo step.
+    void dragAndNudgeTheGeometry()
+    {
+        MainWindow window;
+        window.resize(1300, 750);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openSource(camera()));
+        QVERIFY(waitForProcessed(window, {480, 480}));
+        ConfigDocument* doc = window.document();
+        const double x0 = doc->config().geometry.centerX, y0 = doc->config().geometry.centerY;
+
+        QTest::keyClick(&window, Qt::Key_G);  // editing mode
+        QVERIFY(window.geometryEditor()->isEditing());
+        ImageView* pane = window.pipelineView()->pane(PipelineView::Edges);
+        const QPoint from = pane->toWidget(QPointF(x0, y0)).toPoint();
+        const QPoint to = pane->toWidget(QPointF(x0 + 12, y0 - 8)).toPoint();
+        const int steps = doc->undoStack()->count();
+        QTest::mousePress(pane, Qt::LeftButton, {}, from);
+        QTest::mouseMove(pane, to);
+        QTest::mouseRelease(pane, Qt::LeftButton, {}, to);
+        const GeometryOptions& g = doc->config().geometry;
+        const double moved = pane->toImage(to).x() - pane->toImage(from).x();
+        QVERIFY2(std::abs(g.centerX - (x0 + moved)) <= 0.25, qPrintable(QString("centre x %1, moved %2; %3").arg(g.centerX).arg(moved).arg(window.statusBar()->currentMessage())));
+        QVERIFY(g.centerY < y0 - 4);
+        QCOMPARE(doc->undoStack()->count(), steps + 1);  // the whole drag is one step
+
+        // The outer circle, grabbed on its right side, follows the cursor outwards.
+        const double outer = g.outerRadius;
+        const QPoint rim = pane->toWidget(QPointF(g.centerX + outer, g.centerY)).toPoint();
+        const QPoint out = pane->toWidget(QPointF(g.centerX + outer - 20, g.centerY)).toPoint();
+        QTest::mousePress(pane, Qt::LeftButton, {}, rim);
+        QTest::mouseMove(pane, out);
+        QTest::mouseRelease(pane, Qt::LeftButton, {}, out);
+        QVERIFY2(doc->config().geometry.outerRadius < outer - 15, qPrintable(QString::number(doc->config().geometry.outerRadius)));
+
+        // Alt+Right a quarter pixel, Alt+Shift+Up a whole one; plain Right still steps frames.
+        const double x1 = doc->config().geometry.centerX, y1 = doc->config().geometry.centerY;
+        QTest::keyClick(&window, Qt::Key_Right, Qt::AltModifier);
+        QCOMPARE(doc->config().geometry.centerX, x1 + 0.25);
+        QTest::keyClick(&window, Qt::Key_Up, Qt::AltModifier | Qt::ShiftModifier);
+        QCOMPARE(doc->config().geometry.centerY, y1 - 1.0);
+        doc->undoStack()->undo();
+        doc->undoStack()->undo();
+        doc->undoStack()->undo();
+        doc->undoStack()->undo();
+        QCOMPARE(doc->config().geometry.centerX, x0);
+
+        // Truth marking refused here (an image folder holds no truth): the editor keeps the button.
+        window.truthMarker()->setMarking(true);
+        QVERIFY(!window.truthMarker()->isMarking());
+        QVERIFY(window.geometryEditor()->isEditing());
+        QTest::keyClick(&window, Qt::Key_G);
+        QVERIFY(!window.geometryEditor()->isEditing());
+        window.document()->discardChanges();
     }
 
 private:

@@ -57,8 +57,10 @@ protected:
     void mouseDoubleClickEvent(QMouseEvent* event) override;
     void leaveEvent(QEvent* event) override;
 
+public:
+    double scale() const;  // widget px per image px
+
 private:
-    double scale() const;
     QPointF imageCenter() const;
     void paintOverlay(QPainter& p) const;  // places the labels (labels_)
     void paintTruth(QPainter& p) const;

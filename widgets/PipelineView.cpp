@@ -21,9 +21,16 @@ PipelineView::PipelineView(QWidget* parent) : QWidget(parent), grid_(new QGridLa
         connect(view, &ImageView::hovered, this, &PipelineView::hovered);
         connect(view, &ImageView::left, this, &PipelineView::left);
         connect(view, &ImageView::doubleClicked, this, [this, i] { toggleEnlarged(i); });
-        connect(view, &ImageView::markPressed, this, &PipelineView::markPressed);
-        connect(view, &ImageView::markDragged, this, &PipelineView::markDragged);
-        connect(view, &ImageView::markReleased, this, &PipelineView::markReleased);
+        // The left button is captured for truth marking or for the geometry editor, never both.
+        connect(view, &ImageView::markPressed, this, [this](QPointF p) {
+            if (editingGeometry_) emit geometryPressed(p); else emit markPressed(p);
+        });
+        connect(view, &ImageView::markDragged, this, [this](QPointF p) {
+            if (editingGeometry_) emit geometryDragged(p); else emit markDragged(p);
+        });
+        connect(view, &ImageView::markReleased, this, [this](QPointF p) {
+            if (editingGeometry_) emit geometryReleased(p); else emit markReleased(p);
+        });
         // A click on a pane takes the keyboard back from an editor: arrows, Space, T act again.
         view->setFocusPolicy(Qt::ClickFocus);
         auto* caption = new QLabel(view);
@@ -82,7 +89,14 @@ void PipelineView::setTruth(const TruthOverlay& truth)
 
 void PipelineView::setMarking(bool on)
 {
+    editingGeometry_ = false;
     for (ImageView* v : panes_) v->setMarking(on);
+}
+
+void PipelineView::setEditingGeometry(bool on)
+{
+    for (ImageView* v : panes_) v->setMarking(on);
+    editingGeometry_ = on;
 }
 
 void PipelineView::showRun(const PipelineRun& run, std::shared_ptr<const OverlayData> overlay)

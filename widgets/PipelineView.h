@@ -43,6 +43,10 @@ public:
     void setTruth(const TruthOverlay& truth);
     const TruthOverlay& truth() const { return truth_; }
     void setMarking(bool on);
+    // Geometry editing: the left button drags the centre and the radii (GeometryEditor)
+    // instead of marking or panning; turning it on turns marking off and the other way round.
+    void setEditingGeometry(bool on);
+    double paneScale() const { return panes_[0]->scale(); }  // widget px per image px
 
 signals:
     void hovered(QPointF imagePos);
@@ -50,6 +54,9 @@ signals:
     void markPressed(QPointF imagePos);
     void markDragged(QPointF imagePos);
     void markReleased(QPointF imagePos);
+    void geometryPressed(QPointF imagePos);
+    void geometryDragged(QPointF imagePos);
+    void geometryReleased(QPointF imagePos);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -67,6 +74,7 @@ private:
     QGridLayout* grid_;
     QWidget* side_ = nullptr;
     int enlarged_ = -1;
+    bool editingGeometry_ = false;
 };
 
 }  // namespace omnitune

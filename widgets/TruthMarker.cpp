@@ -94,12 +94,14 @@ void TruthMarker::setMarking(bool on)
         emit message(refusal_);
         on = false;
     }
+    const bool was = marking_;
     marking_ = on;
     dragging_ = false;
-    view_->setMarking(on);
+    if (on != was) view_->setMarking(on);  // a refused "on" must not take the button from the geometry editor
     if (markingAction_) markingAction_->setChecked(on);
     for (QAction* a : markingKeys_) a->setEnabled(on);
     refresh();
+    emit markingChanged(on);
 }
 
 bool TruthMarker::runIsCurrent() const { return run_ && run_->frameIndex == frame_ && run_->error.isEmpty() && run_->result.ok(); }

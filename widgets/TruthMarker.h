@@ -74,6 +74,7 @@ signals:
     void frameRequested(int frame);   // "next unmarked frame"
     void message(const QString& text);  // a refusal, a mark, an undo or a failed save, for the status bar
     void described(const QString& text);  // describe() changed
+    void markingChanged(bool on);
 
 private:
     void onPressed(QPointF p);

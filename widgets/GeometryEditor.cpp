@@ -1,0 +1,133 @@
+#include "widgets/GeometryEditor.h"
+
+#include "widgets/ConfigDocument.h"
+#include "widgets/PipelineView.h"
+
+#include <QAction>
+#include <QMenu>
+
+#include <cmath>
+
+namespace omnitune {
+
+GeometryEditor::GeometryEditor(ConfigDocument* doc, PipelineView* view, QObject* parent)
+    : QObject(parent), doc_(doc), view_(view)
+{
+    connect(view_, &PipelineView::geometryPressed, this, &GeometryEditor::onPressed);
+    connect(view_, &PipelineView::geometryDragged, this, &GeometryEditor::onDragged);
+    connect(view_, &PipelineView::geometryReleased, this, &GeometryEditor::onReleased);
+}
+
+void GeometryEditor::setEditing(bool on)
+{
+    if (on == editing_) return;
+    editing_ = on;
+    grabbed_ = Handle::None;
+    emit editingChanged(on);  // truth marking gives the left button up first
+    view_->setEditingGeometry(on);
+    if (modeAction_) modeAction_->setChecked(on);
+    emit message(on ? tr("Editing the geometry: drag the centre cross or a yellow circle; Alt+arrows nudge the centre "
+                         "(Shift: 1 px); G ends")
+                    : tr("Geometry editing off"));
+}
+
+void GeometryEditor::nudge(double dx, double dy)
+{
+    const GeometryOptions& g = doc_->config().geometry;
+    Config next = doc_->config();
+    next.geometry.centerX = std::round((g.centerX + dx) / kFineStepPx) * kFineStepPx;
+    next.geometry.centerY = std::round((g.centerY + dy) / kFineStepPx) * kFineStepPx;
+    if (const auto why = doc_->replaceConfig(next, tr("Nudge centre"))) {
+        emit message(*why);
+        return;
+    }
+    emit message(tr("Centre (%1, %2) px").arg(next.geometry.centerX, 0, 'f', 2).arg(next.geometry.centerY, 0, 'f', 2));
+}
+
+void GeometryEditor::fillMenu(QMenu* menu)
+{
+    modeAction_ = menu->addAction(tr("&Edit centre and radii on the panes"));
+    modeAction_->setObjectName("editGeometry");
+    modeAction_->setCheckable(true);
+    modeAction_->setShortcut(QKeySequence(Qt::Key_G));
+    connect(modeAction_, &QAction::toggled, this, &GeometryEditor::setEditing);
+    const struct {
+        QKeySequence key;
+        double dx, dy;
+    } nudges[] = {
+        {QKeySequence(Qt::ALT + Qt::Key_Left), -kFineStepPx, 0},   {QKeySequence(Qt::ALT + Qt::Key_Right), kFineStepPx, 0},
+        {QKeySequence(Qt::ALT + Qt::Key_Up), 0, -kFineStepPx},     {QKeySequence(Qt::ALT + Qt::Key_Down), 0, kFineStepPx},
+        {QKeySequence(Qt::ALT + Qt::SHIFT + Qt::Key_Left), -kCoarseStepPx, 0},
+        {QKeySequence(Qt::ALT + Qt::SHIFT + Qt::Key_Right), kCoarseStepPx, 0},
+        {QKeySequence(Qt::ALT + Qt::SHIFT + Qt::Key_Up), 0, -kCoarseStepPx},
+        {QKeySequence(Qt::ALT + Qt::SHIFT + Qt::Key_Down), 0, kCoarseStepPx}};
+    QMenu* nudgeMenu = menu->addMenu(tr("&Nudge centre"));
+    for (const auto& n : nudges) {
+        QAction* a = nudgeMenu->addAction(n.key.toString(QKeySequence::NativeText));
+        a->setShortcut(n.key);
+        connect(a, &QAction::triggered, this, [this, dx = n.dx, dy = n.dy] { nudge(dx, dy); });
+    }
+}
+
+void GeometryEditor::onPressed(QPointF p)
+{
+    const GeometryOptions& g = doc_->config().geometry;
+    const double reach = kGrabDistance / std::max(1e-6, view_->paneScale());  // image px
+    const QPointF centre(g.centerX, g.centerY);
+    const double d = std::hypot(p.x() - centre.x(), p.y() - centre.y());
+    grabbed_ = Handle::None;
+    if (d <= reach)
+        grabbed_ = Handle::Centre;
+    else if (std::abs(d - g.outerRadius) <= reach && std::abs(d - g.outerRadius) <= std::abs(d - g.innerRadius))
+        grabbed_ = Handle::Outer;
+    else if (std::abs(d - g.innerRadius) <= reach)
+        grabbed_ = Handle::Inner;
+    if (grabbed_ == Handle::None) {
+        emit message(tr("Press on the centre cross or on a yellow circle to drag it"));
+        return;
+    }
+    start_ = doc_->config();
+    grabOffset_ = centre - p;
+}
+
+Config GeometryEditor::dragged(Handle handle, QPointF p) const
+{
+    Config c = start_;
+    GeometryOptions& g = c.geometry;
+    const double d = std::hypot(p.x() - g.centerX, p.y() - g.centerY);
+    switch (handle) {
+    case Handle::Centre:
+        g.centerX = std::round((p.x() + grabOffset_.x()) / kFineStepPx) * kFineStepPx;
+        g.centerY = std::round((p.y() + grabOffset_.y()) / kFineStepPx) * kFineStepPx;
+        break;
+    case Handle::Outer: g.outerRadius = std::round(std::max(d, g.innerRadius + 1.0) * 4.0) / 4.0; break;
+    case Handle::Inner: g.innerRadius = std::round(std::min(d, g.outerRadius - 1.0) * 4.0) / 4.0; break;
+    case Handle::None: break;
+    }
+    return c;
+}
+
+void GeometryEditor::onDragged(QPointF p)
+{
+    if (grabbed_ == Handle::None) return;
+    const Config next = dragged(grabbed_, p);
+    if (checkConfig(next).empty()) doc_->applyConfig(next);  // live, without an undo step per mouse move
+}
+
+void GeometryEditor::onReleased(QPointF p)
+{
+    if (grabbed_ == Handle::None) return;
+    const Handle was = grabbed_;
+    grabbed_ = Handle::None;
+    Config next = dragged(was, p);
+    if (!checkConfig(next).empty()) next = doc_->config();  // the last valid position of the drag
+    doc_->applyConfig(start_);  // the undo step goes from where the drag began
+    const QString what = was == Handle::Centre ? tr("Move centre") : was == Handle::Outer ? tr("Set outer radius") : tr("Set inner radius");
+    if (const auto why = doc_->replaceConfig(next, what)) emit message(*why);
+    const GeometryOptions& g = doc_->config().geometry;
+    emit message(tr("Centre (%1, %2) px, inner radius %3 px, outer radius %4 px")
+                     .arg(g.centerX, 0, 'f', 2).arg(g.centerY, 0, 'f', 2).arg(g.innerRadius, 0, 'f', 2)
+                     .arg(g.outerRadius, 0, 'f', 2));
+}
+
+}  // namespace omnitune
