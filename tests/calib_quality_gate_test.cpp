@@ -1,0 +1,143 @@
+// The quality gate (issue 9, section 5): the detector on the optics simulator's matrix of ball
+// kinds x light x distractors x frame sizes (plus ball-free cells), with the config fitted from
+// the simulated camera's measurements, against the floors in tests/quality_gate_floors.csv.
+// The floors hold what the detector achieved when they were written (less a margin) and issue
+// 9's targets; a run prints the measured table and the gap to each target, and fails naming
+// every metric that fell below its floor.
+//   OMNITUNE_GATE_FRAMES=N  frames per ball cell instead of the floors file's (slower, finer)
+// Regenerate the floors on purpose after a detector change:
+//   build/app/omnitune-eval --quality-matrix --write-floors tests/quality_gate_floors.csv
+#include "calib/eval/QualityFloors.h"
+#include "calib/eval/QualityReport.h"
+#include "calib/fit/NumberCsv.h"
+#include "core/ConfigSchema.h"
+
+#include <QtTest>
+
+#include <cstdlib>
+#include <set>
+
+using namespace omnitune;
+
+namespace {
+
+const std::string kFloorsFile = OMNITUNE_SOURCE_DIR "/tests/quality_gate_floors.csv";
+const std::string kDeviationsFile = OMNITUNE_SOURCE_DIR "/tests/quality_gate_deviations.csv";
+
+}  // namespace
+
+class QualityGateTest : public QObject {
+    Q_OBJECT
+
+    QualityFloorsFile floors_;
+    QualityRun run_;
+
+private slots:
+    void initTestCase()
+    {
+        const auto text = readTextFile(kFloorsFile);
+        QVERIFY2(text.has_value(), (kFloorsFile + " cannot be read").c_str());
+        std::string error;
+        const auto floors = parseQualityFloors(*text, error);
+        QVERIFY2(floors.has_value(), (kFloorsFile + ": " + error).c_str());
+        floors_ = *floors;
+        QualityMatrixOptions matrix = floors_.matrix;
+        if (const char* env = std::getenv("OMNITUNE_GATE_FRAMES")) {
+            const int n = std::atoi(env);
+            QVERIFY2(n >= 1, "OMNITUNE_GATE_FRAMES must be a positive whole number");
+            matrix.framesPerCell = n;
+        }
+        run_ = runQuality(qualityMatrixCells(matrix), algorithmVariants());
+        const std::string md = qualitySummaryMarkdown(run_, shippedVariants(run_)) + "\n" +
+                               qualityBreakdownMarkdown(run_, shippedVariants(run_));
+        qInfo("%zu cells, %d frames per ball cell\n%s", run_.cells.size(), matrix.framesPerCell, md.c_str());
+    }
+
+    // Every ball kind meets every light and every distractor at both frame sizes, and the
+    // ball-free cells are there to count false positives.
+    void matrixCoversTheGrid()
+    {
+        const std::vector<OpticsCell> cells = qualityMatrixCells(floors_.matrix);
+        std::set<std::string> names;
+        int ballFree = 0;
+        for (const OpticsCell& c : cells) {
+            names.insert(opticsCellName(c));
+            ballFree += !c.ballPresent;
+        }
+        QCOMPARE(int(names.size()), int(cells.size()));  // no cell twice
+        QCOMPARE(int(cells.size()) - ballFree, int(kAllBallKinds.size()) * 4 * 4 * 2);
+        QCOMPARE(ballFree, 4 * 4 * 2);
+        QCOMPARE(int(run_.cells.size()), int(cells.size()));
+        QVERIFY(qualityTotal(run_, 0).frames >= int(cells.size()));
+    }
+
+    // The floors file holds every metric for every algorithm, so regenerating it cannot drop one.
+    void floorsFileIsComplete()
+    {
+        for (const QualityVariant& v : algorithmVariants())
+            for (const char* metric : {"detection_pct", "cell_min_detection_pct", "false_positive_pct", "range_std_cm"}) {
+                const bool present = std::any_of(floors_.floors.begin(), floors_.floors.end(), [&](const QualityFloor& f) {
+                    return f.algorithm == v.name && f.metric == metric;
+                });
+                QVERIFY2(present, (v.name + " " + metric + " has no row in " + kFloorsFile).c_str());
+            }
+        std::string error;
+        const auto again = parseQualityFloors(serializeQualityFloors(floors_), error);
+        QVERIFY2(again.has_value(), error.c_str());
+        QCOMPARE(serializeQualityFloors(*again), serializeQualityFloors(floors_));
+    }
+
+    // Each row of the deviations table switches a real key to a valid value other than ours.
+    void deviationsTableApplies()
+    {
+        const auto text = readTextFile(kDeviationsFile);
+        QVERIFY(text.has_value());
+        std::string error;
+        const std::vector<ConfigOverride> rows = parseDeviationsCsv(*text, error);
+        QVERIFY2(error.empty(), error.c_str());
+        QVERIFY(rows.size() >= 5);
+        for (const ConfigOverride& o : rows) {
+            Config c;
+            QVERIFY(!applyConfigOverride(c, o).has_value());
+            const ConfigKey* key = findConfigKey(o.key);
+            QVERIFY(key);
+            QVERIFY2(formatConfigValue(key->get(c)) != formatConfigValue(key->get(Config{})),
+                     (o.key + ": the thesis value is already the default").c_str());
+            QVERIFY(checkConfig(c).empty());
+        }
+        Config c;
+        QVERIFY(applyConfigOverride(c, {"no.such_key", "1", ""}).has_value());
+        QVERIFY(applyConfigOverride(c, {"validation.max_run_on_pct", "101", ""}).has_value());
+        QVERIFY(applyConfigOverride(c, {"validation.first_edge_only", "maybe", ""}).has_value());
+    }
+
+    void floors_data()
+    {
+        QTest::addColumn<QString>("algorithm");
+        QTest::addColumn<QString>("metric");
+        for (const QualityFloor& f : floors_.floors)
+            QTest::newRow((f.algorithm + " " + f.metric).c_str())
+                << QString::fromStdString(f.algorithm) << QString::fromStdString(f.metric);
+    }
+
+    void floors()
+    {
+        QFETCH(QString, algorithm);
+        QFETCH(QString, metric);
+        QualityFloorsFile one = floors_;
+        one.floors.erase(std::remove_if(one.floors.begin(), one.floors.end(),
+                                        [&](const QualityFloor& f) {
+                                            return f.algorithm != algorithm.toStdString() || f.metric != metric.toStdString();
+                                        }),
+                         one.floors.end());
+        const std::vector<QualityFloorCheck> checks = checkQualityFloors(run_, one);
+        QVERIFY2(!checks.empty(), "the floors file names an algorithm the gate does not run");
+        for (const QualityFloorCheck& c : checks) {
+            qInfo("%s", c.line.c_str());
+            QVERIFY2(c.passed, c.line.c_str());
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(QualityGateTest)
+#include "calib_quality_gate_test.moc"
