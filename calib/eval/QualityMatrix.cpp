@@ -25,9 +25,9 @@ std::vector<OpticsCell> qualityMatrixCells(const QualityMatrixOptions& options)
         const OpticsMirror mirror = size.width == size.height ? OpticsMirror::Spherical : OpticsMirror::Hyperbolic;
         for (std::size_t l = 0; l < std::size(kLights); ++l)
             for (std::size_t d = 0; d < std::size(kDistractors); ++d)
-                for (std::size_t b = 0; b < kAllBallKinds.size(); ++b) {
+                for (std::size_t b = 0; b < kExtendedBallKinds.size(); ++b) {
                     OpticsCell cell;
-                    cell.ball = kAllBallKinds[b];
+                    cell.ball = kExtendedBallKinds[b];
                     cell.light = kLights[l];
                     cell.distractors = kDistractors[d];
                     cell.mirror = mirror;

@@ -5,7 +5,12 @@
 #include "core/Stopwatch.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <thread>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -91,58 +96,115 @@ std::string configKey(const Config& c)
 
 }  // namespace
 
-QualityRun runQuality(const std::vector<OpticsCell>& cells, const std::vector<QualityVariant>& variants,
-                      const Config& base, const QualityRunOptions& options, Progress* progress)
-{
-    QualityRun run;
-    run.variants = variants;
-    std::vector<std::map<std::string, std::unique_ptr<Pipeline>>> pipelines(variants.size());
-    PipelineResult result;
-    for (std::size_t ci = 0; ci < cells.size(); ++ci) {
-        if (progress && progress->isCancelRequested()) break;
-        const OpticsCell& cell = cells[ci];
+namespace {
+
+// One thread's share of a run: its own pipelines, one per (variant, config).
+class CellRunner {
+public:
+    CellRunner(const std::vector<QualityVariant>& variants, const Config& base, const QualityRunOptions& options)
+        : variants_(variants), base_(base), options_(options), pipelines_(variants.size())
+    {
+    }
+
+    QualityCellResult run(const OpticsCell& cell, double& renderMs)
+    {
         Stopwatch renderClock;
-        const OpticsCellFrames rendered = renderCell(cell, base);
-        run.renderMs += renderClock.total();
+        const OpticsCellFrames rendered = renderCell(cell, base_);
+        renderMs += renderClock.total();
         QualityCellResult cr;
         cr.cell = cell;
         cr.name = opticsCellName(cell);
-        for (std::size_t vi = 0; vi < variants.size(); ++vi) {
-            const QualityVariant& variant = variants[vi];
+        for (std::size_t vi = 0; vi < variants_.size(); ++vi) {
+            const QualityVariant& variant = variants_[vi];
             Config config = rendered.fittedConfig;
             config.algorithm = variant.algorithm;
             for (const ConfigOverride& o : variant.overrides)
                 if (auto why = applyConfigOverride(config, o)) throw std::invalid_argument(variant.name + ": " + *why);
-            auto& slot = pipelines[vi][configKey(config)];
+            auto& slot = pipelines_[vi][configKey(config)];
             try {
                 if (!slot) slot = std::make_unique<Pipeline>(config);
             } catch (const std::exception& e) {
                 throw std::invalid_argument(cr.name + " (" + variant.name + "): the fitted config is refused: " + e.what());
             }
-            QualityTally tally;
-            for (std::size_t f = 0; f < rendered.frames.size(); ++f) {
-                const auto t = rendered.truth.find(int(f));
-                if (t == rendered.truth.end()) continue;
-                slot->process(rendered.frames[f], PixelFormat::Bgr8, result);
-                const FrameOutcome outcome = outcomeOf(int(f), result);
-                const TruthRow& truth = t->second;
-                const TruthVerdict verdict = judge(outcome, &truth, options.evaluation);
-                ++tally.frames;
-                if (outcome.processed) tally.timesMs.push_back(outcome.timeMs);
-                tally.falsePositives += verdict == TruthVerdict::FalsePositive;
-                if (!truth.ballVisible) continue;
-                ++tally.withBall;
-                if (verdict != TruthVerdict::Correct) continue;
-                ++tally.correct;
-                const double trueRange = std::hypot(truth.xM, truth.yM);
-                if (trueRange <= options.rangeWithinM)
-                    tally.rangeErrorsM.push_back(std::hypot(outcome.detection.xM, outcome.detection.yM) - trueRange);
-            }
-            cr.tallies.push_back(std::move(tally));
+            cr.tallies.push_back(judgeFrames(*slot, rendered));
         }
-        run.cells.push_back(std::move(cr));
-        if (progress) progress->update(100.0 * double(ci + 1) / double(cells.size()));
+        return cr;
     }
+
+private:
+    QualityTally judgeFrames(Pipeline& pipeline, const OpticsCellFrames& rendered)
+    {
+        QualityTally tally;
+        for (std::size_t f = 0; f < rendered.frames.size(); ++f) {
+            const auto t = rendered.truth.find(int(f));
+            if (t == rendered.truth.end()) continue;
+            pipeline.process(rendered.frames[f], PixelFormat::Bgr8, result_);
+            const FrameOutcome outcome = outcomeOf(int(f), result_);
+            const TruthRow& truth = t->second;
+            const TruthVerdict verdict = judge(outcome, &truth, options_.evaluation);
+            ++tally.frames;
+            if (outcome.processed) tally.timesMs.push_back(outcome.timeMs);
+            tally.falsePositives += verdict == TruthVerdict::FalsePositive;
+            if (!truth.ballVisible) continue;
+            ++tally.withBall;
+            if (verdict != TruthVerdict::Correct) continue;
+            ++tally.correct;
+            const double trueRange = std::hypot(truth.xM, truth.yM);
+            if (trueRange <= options_.rangeWithinM)
+                tally.rangeErrorsM.push_back(std::hypot(outcome.detection.xM, outcome.detection.yM) - trueRange);
+        }
+        return tally;
+    }
+
+    const std::vector<QualityVariant>& variants_;
+    const Config& base_;
+    const QualityRunOptions& options_;
+    std::vector<std::map<std::string, std::unique_ptr<Pipeline>>> pipelines_;
+    PipelineResult result_;
+};
+
+}  // namespace
+
+QualityRun runQuality(const std::vector<OpticsCell>& cells, const std::vector<QualityVariant>& variants,
+                      const Config& base, const QualityRunOptions& options, Progress* progress)
+{
+    QualityRun run;
+    run.variants = variants;
+    std::vector<std::optional<QualityCellResult>> results(cells.size());
+    std::atomic<std::size_t> next{0};
+    std::atomic<bool> stop{false};
+    std::mutex mutex;  // guards done, renderMs, failure and progress
+    std::size_t done = 0;
+    std::exception_ptr failure;
+    auto work = [&] {
+        CellRunner runner(variants, base, options);
+        double renderMs = 0;
+        try {
+            for (std::size_t i = next++; i < cells.size() && !stop; i = next++) {
+                results[i] = runner.run(cells[i], renderMs);
+                const std::lock_guard<std::mutex> lock(mutex);
+                ++done;
+                if (progress) {
+                    progress->update(100.0 * double(done) / double(cells.size()));
+                    if (progress->isCancelRequested()) stop = true;
+                }
+            }
+        } catch (...) {
+            const std::lock_guard<std::mutex> lock(mutex);
+            if (!failure) failure = std::current_exception();
+            stop = true;
+        }
+        const std::lock_guard<std::mutex> lock(mutex);
+        run.renderMs += renderMs;
+    };
+    const int threads = std::max(1, options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency()));
+    std::vector<std::thread> pool;
+    for (int t = 1; t < std::min<int>(threads, int(cells.size())); ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+    for (auto& r : results)
+        if (r) run.cells.push_back(std::move(*r));
     return run;
 }
 

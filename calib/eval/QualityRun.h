@@ -58,16 +58,22 @@ struct QualityCellResult {
 struct QualityRunOptions {
     EvaluationOptions evaluation;  // max error before a detection counts as a false positive
     double rangeWithinM = 4.0;     // range error is measured on balls this close (issue 9: 4 m)
+    // Cells run on this many threads (each with its own pipelines); 0: one per hardware thread.
+    // Detection and false-positive figures do not depend on it; per-frame times do (threads
+    // share the cores and caches): 1 for timings worth quoting.
+    int threads = 1;
 };
 
 struct QualityRun {
     std::vector<QualityVariant> variants;
     std::vector<QualityCellResult> cells;
-    double renderMs = 0.0;  // total time spent rendering and calibrating (not the detector's)
+    double renderMs = 0.0;  // time spent rendering and calibrating, summed over threads
 };
 
 // Throws std::invalid_argument when a variant's override does not apply, or the pipeline
-// refuses a fitted config (the message names the cell). `progress` may be null.
+// refuses a fitted config (the message names the cell). `progress` may be null; it is called
+// from one thread at a time, and cancelling stops before the next cell (the run then holds
+// the cells finished so far, in matrix order).
 QualityRun runQuality(const std::vector<OpticsCell>& cells, const std::vector<QualityVariant>& variants,
                       const Config& base = {}, const QualityRunOptions& options = {}, Progress* progress = nullptr);
 
