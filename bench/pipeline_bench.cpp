@@ -215,7 +215,7 @@ struct HardFrames {
     {
         for (OpticsDistractors d : {OpticsDistractors::NoiseBlur, OpticsDistractors::RodsOcclusion,
                                     OpticsDistractors::RobotsFeetShadow})
-            for (BallKind kind : kAllBallKinds) {
+            for (BallKind kind : kExtendedBallKinds) {
                 OpticsCell spec;
                 spec.ball = kind;
                 spec.light = OpticsLight::Dim;
