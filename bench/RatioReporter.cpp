@@ -8,7 +8,10 @@ void RatioReporter::ReportRuns(const std::vector<Run>& runs)
     for (const Run& r : runs) {
         if (r.run_type != Run::RT_Iteration || r.iterations == 0) continue;
         // GetAdjustedRealTime() is in the run's unit; the multiplier is units per second.
-        const double ms = r.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(r.time_unit) * 1e3;
+        double ms = r.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(r.time_unit) * 1e3;
+        // Benchmarks whose iteration is a pass over several frames say how many.
+        const auto perIteration = r.counters.find("frames_per_iteration");
+        if (perIteration != r.counters.end() && perIteration->second.value > 0) ms /= perIteration->second.value;
         times_.emplace_back(r.benchmark_name(), ms);
     }
 }
