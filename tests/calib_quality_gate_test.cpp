@@ -153,6 +153,34 @@ private slots:
         QVERIFY(applyConfigOverride(c, {"validation.first_edge_only", "maybe", ""}).has_value());
     }
 
+    // The check itself, on a hand-made run: a metric below a min floor, or above a max floor,
+    // fails; a metric that cannot be measured fails a floor; the gap to the target is named.
+    void floorCheckFailsWhatFell()
+    {
+        QualityRun run;
+        run.variants = {{"specific", Algorithm::Specific, {}}};
+        QualityCellResult cell;
+        cell.tallies.resize(1);
+        cell.tallies[0].frames = 10;
+        cell.tallies[0].withBall = 10;
+        cell.tallies[0].correct = 8;
+        cell.tallies[0].falsePositives = 1;
+        run.cells = {cell};
+        QualityFloorsFile file;
+        file.floors = {{"specific", "detection_pct", true, 97.0, 81.0, {}},
+                       {"specific", "detection_pct", true, 97.0, 79.0, {}},
+                       {"specific", "false_positive_pct", false, 0.5, 5.0, {}},
+                       {"specific", "range_std_cm", false, 5.0, 3.0, {}},
+                       {"opencv", "detection_pct", true, 70.0, 1.0, {}}};  // not run: not checked
+        const std::vector<QualityFloorCheck> checks = checkQualityFloors(run, file);
+        QCOMPARE(int(checks.size()), 4);
+        QVERIFY(!checks[0].passed);  // 80 < 81
+        QVERIFY(checks[1].passed);
+        QVERIFY2(checks[1].line.find("17.00 to go") != std::string::npos, checks[1].line.c_str());
+        QVERIFY(!checks[2].passed);  // 10 % > 5 %
+        QVERIFY(!checks[3].passed);  // no range sample to measure
+    }
+
     void floors_data()
     {
         QTest::addColumn<QString>("algorithm");
