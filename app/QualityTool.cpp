@@ -17,8 +17,8 @@ std::vector<OptionSpec> qualityToolOptions()
 {
     return {
         {"quality-matrix", false, false, "      the quality gate's matrix on the optics simulator (no --session)"},
-        {"frames", true, false, "N     with --quality-matrix: frames per ball cell (default: the floors file's, else 2)"},
-        {"ball-free-frames", true, false, "N     with --quality-matrix: frames per ball-free cell (default 4)"},
+        {"frames", true, false, "N     with --quality-matrix: frames per ball cell (default: the floors file's, else 1)"},
+        {"ball-free-frames", true, false, "N     with --quality-matrix: frames per ball-free cell (default 2)"},
         {"seed", true, false, "N     with --quality-matrix: the matrix seed (default 1)"},
         {"floors", true, false, "FILE  with --quality-matrix: check these floors as the gate test does"},
         {"write-floors", true, false, "FILE  with --quality-matrix: write floors (measured less a margin) to FILE"},

@@ -9,7 +9,7 @@
 // camera only and checks that the run completes without asserting the floors (the normal build does);
 // OMNITUNE_GATE_FULL=1 runs the whole matrix there too.
 // Regenerate the floors on purpose after a detector change:
-//   build/app/omnitune-eval --quality-matrix --write-floors tests/quality_gate_floors.csv
+//   build/app/omnitune-eval --quality-matrix --threads 0 --write-floors tests/quality_gate_floors.csv
 #include "calib/eval/QualityFloors.h"
 #include "calib/eval/QualityReport.h"
 #include "calib/fit/NumberCsv.h"

@@ -125,7 +125,7 @@ std::string serializeQualityFloors(const QualityFloorsFile& file)
         "# Floors of the quality gate (tests/calib_quality_gate_test.cpp) on the optics simulator's matrix\n"
         "# (calib/eval/QualityMatrix.h). floor: what the test asserts (measured when written, less a margin);\n"
         "# target: issue 9's goal; '-': none. Regenerate (after a detector change, on purpose):\n"
-        "#   build/app/omnitune-eval --quality-matrix --write-floors tests/quality_gate_floors.csv\n";
+        "#   build/app/omnitune-eval --quality-matrix --threads 0 --write-floors tests/quality_gate_floors.csv\n";
     s += "frames_per_cell," + std::to_string(file.matrix.framesPerCell) + "\n";
     s += "ball_free_frames_per_cell," + std::to_string(file.matrix.ballFreeFramesPerCell) + "\n";
     s += "seed," + std::to_string(file.matrix.seed) + "\n";
