@@ -18,12 +18,15 @@ double mirrorHitRadius(const MirrorProfile& mirror, double vertex, double tanThe
     const double rim = mirror.rimRadius();
     auto f = [&](double r) { return r - tanTheta * (vertex + mirror.height(r)); };
     if (f(rim) < 0) return -1.0;  // still below the mirror surface at the rim: misses it
-    double lo = 0.0, hi = rim;
-    for (int i = 0; i < 32; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (f(mid) < 0 ? lo : hi) = mid;
+    // f rises and is concave (the mirror curves up), and f(tan * vertex) <= 0: Newton from there
+    // approaches the root from the left without overshooting.
+    double r = std::min(tanTheta * vertex, rim);
+    for (int i = 0; i < 12; ++i) {
+        const double step = f(r) / std::max(1.0 - tanTheta * mirror.slope(r), 1e-6);
+        r = std::clamp(r - step, 0.0, rim);
+        if (std::abs(step) < 1e-10) break;
     }
-    return 0.5 * (lo + hi);
+    return r;
 }
 
 cv::Vec3d reflect(const cv::Vec3d& d, const cv::Vec3d& n) { return d - 2.0 * d.dot(n) * n; }
@@ -233,15 +236,11 @@ std::optional<WorldRay> CatadioptricCamera::rayAt(double x, double y) const
     return out;
 }
 
-std::optional<cv::Point2d> CatadioptricCamera::project(const cv::Point3d& q) const
+std::optional<cv::Point2d> CatadioptricCamera::project(const cv::Point3d& q, std::optional<cv::Point2d> hint) const
 {
-    // The ray's point at the target's height, or nullopt when it does not come down to it.
-    auto at = [&](double x, double y) -> std::optional<cv::Point2d> {
-        const auto r = rayAt(x, y);
-        if (!r || r->direction[2] > -1e-6 || r->origin[2] <= q.z) return std::nullopt;
-        const double t = (q.z - r->origin[2]) / r->direction[2];
-        return cv::Point2d(r->origin[0] + t * r->direction[0], r->origin[1] + t * r->direction[1]);
-    };
+    if (hint) {
+        if (auto p = refine(q, *hint)) return p;
+    }
     // Coarse: every 3rd pixel of the table.
     double best = std::numeric_limits<double>::max();
     cv::Point2d p(0, 0);
@@ -258,8 +257,20 @@ std::optional<cv::Point2d> CatadioptricCamera::project(const cv::Point3d& q) con
             if (e2 < best) best = e2, p = {double(x), double(y)};
         }
     if (best == std::numeric_limits<double>::max()) return std::nullopt;
-    // Fine: Gauss-Newton on the bilinear ray field.
-    for (int it = 0; it < 12; ++it) {
+    return refine(q, p);
+}
+
+std::optional<cv::Point2d> CatadioptricCamera::refine(const cv::Point3d& q, cv::Point2d p) const
+{
+    // The ray's point at the target's height, or nullopt when it does not come down to it.
+    auto at = [&](double x, double y) -> std::optional<cv::Point2d> {
+        const auto r = rayAt(x, y);
+        if (!r || r->direction[2] > -1e-6 || r->origin[2] <= q.z) return std::nullopt;
+        const double t = (q.z - r->origin[2]) / r->direction[2];
+        return cv::Point2d(r->origin[0] + t * r->direction[0], r->origin[1] + t * r->direction[1]);
+    };
+    // Gauss-Newton on the bilinear ray field.
+    for (int it = 0; it < 16; ++it) {
         const auto g = at(p.x, p.y), gx = at(p.x + 0.25, p.y), gy = at(p.x, p.y + 0.25);
         if (!g || !gx || !gy) break;
         const cv::Matx22d j((gx->x - g->x) / 0.25, (gy->x - g->x) / 0.25, (gx->y - g->y) / 0.25, (gy->y - g->y) / 0.25);

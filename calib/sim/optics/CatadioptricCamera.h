@@ -81,7 +81,8 @@ public:
 
     // Where a world point is seen: the sub-pixel position whose reflected ray passes through it
     // (frame px, may lie in the margin). nullopt when no ray of the table comes within 2 cm.
-    std::optional<cv::Point2d> project(const cv::Point3d& point) const;
+    // `hint`: a position near the answer (a few px), which spares the search over the table.
+    std::optional<cv::Point2d> project(const cv::Point3d& point, std::optional<cv::Point2d> hint = std::nullopt) const;
 
     // Where the mirror's rim is seen (px, the mean over its circle) and its mean radius: what a
     // rim fit should find.
@@ -89,6 +90,7 @@ public:
     double rimRadiusPx() const { return rimRadiusPx_; }
 
 private:
+    std::optional<cv::Point2d> refine(const cv::Point3d& point, cv::Point2d start) const;  // Gauss-Newton from `start`
     int index(int x, int y) const { return (y + margin_) * stride_ + (x + margin_); }
 
     CatadioptricCameraParams params_;

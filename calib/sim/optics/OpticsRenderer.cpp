@@ -5,6 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 namespace omnitune {
 
@@ -55,6 +59,33 @@ bool azimuthInside(float az, float centre, float halfWidth)
     while (d > float(kPi)) d -= float(2 * kPi);
     while (d < -float(kPi)) d += float(2 * kPi);
     return std::abs(d) <= halfWidth;
+}
+
+// Distance to the nearest line centre every kLineStep m over the carpet. Shared by every renderer
+// of the same field (the cells of a run use one), as it takes a good part of a second.
+cv::Mat lineDistanceGrid(const FieldModel& field)
+{
+    static std::mutex mutex;
+    static std::vector<std::pair<FieldDimensions, cv::Mat>> cache;
+    const FieldDimensions& d = field.dimensions();
+    const auto same = [](const FieldDimensions& a, const FieldDimensions& b) {
+        return std::tie(a.length, a.width, a.lineWidth, a.centerCircleRadius, a.goalAreaDepth, a.goalAreaWidth,
+                        a.penaltyAreaDepth, a.penaltyAreaWidth, a.cornerArcRadius, a.penaltyMarkDistance, a.spotRadius,
+                        a.carpetMargin) ==
+               std::tie(b.length, b.width, b.lineWidth, b.centerCircleRadius, b.goalAreaDepth, b.goalAreaWidth,
+                        b.penaltyAreaDepth, b.penaltyAreaWidth, b.cornerArcRadius, b.penaltyMarkDistance, b.spotRadius,
+                        b.carpetMargin);
+    };
+    std::lock_guard<std::mutex> lock(mutex);
+    for (const auto& [dims, grid] : cache)
+        if (same(dims, d)) return grid;
+    const cv::Rect2d carpet = field.carpetBounds();
+    cv::Mat grid(int(std::ceil(carpet.height / kLineStep)) + 2, int(std::ceil(carpet.width / kLineStep)) + 2, CV_32F);
+    for (int gy = 0; gy < grid.rows; ++gy)
+        for (int gx = 0; gx < grid.cols; ++gx)
+            grid.at<float>(gy, gx) = float(field.distanceToLines({carpet.x + gx * kLineStep, carpet.y + gy * kLineStep}));
+    cache.emplace_back(d, grid);
+    return grid;
 }
 
 }  // namespace
@@ -148,10 +179,7 @@ OpticsRenderer::OpticsRenderer(const CatadioptricCamera& camera, const FieldDime
     const cv::Rect2d carpet = field_.carpetBounds();
     carpet_ = carpet;
     gridOrigin_ = {carpet.x, carpet.y};
-    lineGrid_.create(int(std::ceil(carpet.height / kLineStep)) + 2, int(std::ceil(carpet.width / kLineStep)) + 2, CV_32F);
-    for (int gy = 0; gy < lineGrid_.rows; ++gy)
-        for (int gx = 0; gx < lineGrid_.cols; ++gx)
-            lineGrid_.at<float>(gy, gx) = float(field_.distanceToLines({carpet.x + gx * kLineStep, carpet.y + gy * kLineStep}));
+    lineGrid_ = lineDistanceGrid(field_);
     carpetGrid_.create(int(std::ceil(carpet.height / kCarpetStep)) + 2, int(std::ceil(carpet.width / kCarpetStep)) + 2, CV_32F);
     cv::RNG rng(1977);
     rng.fill(carpetGrid_, cv::RNG::NORMAL, 0.0, 1.0);
@@ -322,10 +350,12 @@ void OpticsRenderer::drawBall(const OpticsScene& scene, const Frame& frame, cv::
     const double dist = std::max(truth.distanceM, 1e-6);
     const cv::Vec3d radial(B[0] / dist, B[1] / dist, 0), tangential(-B[1] / dist, B[0] / dist, 0);
     std::vector<cv::Point2d> corners;
+    const auto centrePx = camera_.project({B[0], B[1], B[2]});
+    if (!centrePx) return;
     for (const cv::Vec3d& off : {cv::Vec3d(0, 0, 0), radial * R, -radial * R, tangential * R, -tangential * R,
                                  cv::Vec3d(0, 0, R), cv::Vec3d(0, 0, -R * 0.999)}) {
         const cv::Vec3d q = B + off;
-        if (auto p = camera_.project({q[0], q[1], q[2]})) corners.push_back(*p);
+        if (auto p = camera_.project({q[0], q[1], q[2]}, *centrePx)) corners.push_back(*p);
     }
     if (corners.size() < 3) return;
     double bx0 = corners[0].x, by0 = corners[0].y, bx1 = bx0, by1 = by0;
