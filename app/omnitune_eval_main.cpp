@@ -3,6 +3,7 @@
 #include "calib/eval/BatchRun.h"
 #include "app/CommandLine.h"
 #include "app/EvalCompare.h"
+#include "app/QualityTool.h"
 #include "calib/eval/Evaluation.h"
 #include "calib/session/SessionReader.h"
 #include "calib/source/SessionSource.h"
@@ -18,7 +19,7 @@ using namespace omnitune;
 
 namespace {
 
-const std::vector<OptionSpec> kOptions = {
+const std::vector<OptionSpec> kSessionOptions = {
     {"session", true, true, "DIR   a session with truth.csv; repeat for several (one row each)"},
     {"config", true, false, "FILE  detector config (default: each session's config.yml)"},
     {"algorithm", true, false, "A     specific | opencv | combined | all (default: the config's)"},
@@ -27,6 +28,14 @@ const std::vector<OptionSpec> kOptions = {
     {"compare", true, true, "A B   two configs over one session, side by side, and the frames that changed"},
     {"help", false, false, "      this text"},
 };
+
+std::vector<OptionSpec> allOptions()
+{
+    std::vector<OptionSpec> o = kSessionOptions;
+    for (OptionSpec& q : qualityToolOptions()) o.push_back(std::move(q));
+    return o;
+}
+const std::vector<OptionSpec> kOptions = allOptions();
 
 int fail(const std::string& why)
 {
@@ -61,6 +70,7 @@ int main(int argc, char** argv)
         return 0;
     }
     if (!cl.error.empty()) return fail(cl.error + " (see --help)");
+    if (cl.has("quality-matrix")) return runQualityTool(cl);
     if (!cl.has("session")) return fail("--session is required (see --help)");
     const std::string format = cl.value("format").value_or("md");
     if (format != "md" && format != "csv") return fail("--format must be md or csv, not '" + format + "'");

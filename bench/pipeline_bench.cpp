@@ -1,17 +1,24 @@
 // Per-stage and whole-pipeline timings on simulated 640x480 omnidirectional frames, each
 // beside cv::HoughCircles with the thesis' parameters on the same frames (see RatioReporter).
+// The optics simulator's hardest frames (dim light with noise + blur, rods, robots and feet)
+// have their own reference: cv::HoughCircles on those frames' binary images.
 // Run: scripts/bench  (numbers and machine in docs/performance.md)
 #include "RatioReporter.h"
 
 #include "calib/sim/BallKind.h"
 #include "calib/sim/SceneSimulator.h"
 #include "calib/sim/Tour.h"
+#include "calib/sim/optics/OpticsCell.h"
+#include "core/Stopwatch.h"
 #include "core/FrontEnd.h"
 #include "core/Pipeline.h"
 
 #include <opencv2/imgproc.hpp>
 
 #include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <memory>
 
 namespace {
 
@@ -190,6 +197,117 @@ void BM_Pipeline(benchmark::State& state)
     setFrames(state);
 }
 
+
+// The optics simulator's hardest cells (issue 9: dim light, sensor noise + motion blur, rods
+// and occlusion, robots + feet + head shadow), every ball kind, 640x480 through the hyperbolic
+// mirror, each with its own fitted config; the binary image cv::HoughCircles gets is the
+// pipeline's own (its grayscale stage), so the reference sees what the OpenCV path sees.
+struct HardFrames {
+    struct Cell {
+        std::unique_ptr<Pipeline> specific, opencv, combined;
+        std::vector<cv::Mat> bgr;
+        std::vector<cv::Mat> binary;
+    };
+    std::vector<Cell> cells;
+    std::size_t frames = 0;
+
+    HardFrames()
+    {
+        for (OpticsDistractors d : {OpticsDistractors::NoiseBlur, OpticsDistractors::RodsOcclusion,
+                                    OpticsDistractors::RobotsFeetShadow})
+            for (BallKind kind : kExtendedBallKinds) {
+                OpticsCell spec;
+                spec.ball = kind;
+                spec.light = OpticsLight::Dim;
+                spec.distractors = d;
+                spec.frames = 4;
+                spec.seed = 4242u + unsigned(cells.size());
+                OpticsCellFrames rendered = renderCell(spec);
+                Cell cell;
+                Config c = rendered.fittedConfig;
+                c.algorithm = Algorithm::Specific;
+                cell.specific = std::make_unique<Pipeline>(c);
+                c.algorithm = Algorithm::OpenCv;
+                cell.opencv = std::make_unique<Pipeline>(c);
+                c.algorithm = Algorithm::Combined;
+                cell.combined = std::make_unique<Pipeline>(c);
+                PipelineResult r;
+                for (const cv::Mat& f : rendered.frames) {
+                    cell.specific->process(f, PixelFormat::Bgr8, r, true);
+                    cell.bgr.push_back(f);
+                    cell.binary.push_back(r.stages.grayscale.clone());
+                    ++frames;
+                }
+                cells.push_back(std::move(cell));
+            }
+    }
+
+    // The k-th frame over all cells, round robin.
+    template <class F>
+    void at(std::size_t k, F&& f) const
+    {
+        for (const Cell& c : cells) {
+            if (k < c.bgr.size()) return f(c, k);
+            k -= c.bgr.size();
+        }
+    }
+};
+
+const HardFrames& hardFrames()
+{
+    static const HardFrames f;
+    return f;
+}
+
+// One iteration is a pass over every hard frame (each benchmark sees the same frames, however
+// few iterations a slow one gets); RatioReporter divides by "frames_per_iteration".
+void BM_HardCvHoughCircles(benchmark::State& state)
+{
+    const auto& f = hardFrames();
+    const OpenCvHoughOptions o;
+    std::vector<cv::Vec3f> circles;
+    for (auto _ : state)
+        for (std::size_t i = 0; i < f.frames; ++i)
+            f.at(i, [&](const HardFrames::Cell& c, std::size_t k) {
+                cv::HoughCircles(c.binary[k], circles, cv::HOUGH_GRADIENT, o.dp, o.minDist, o.cannyHigh, o.accThreshold,
+                                 o.minRadius, o.maxRadius);
+                benchmark::DoNotOptimize(circles.data());
+            });
+    state.SetItemsProcessed(state.iterations() * std::int64_t(f.frames));
+    state.counters["frames_per_iteration"] = double(f.frames);
+}
+
+// Also the per-frame p50 and p99 (issue 9: p99 <= 10 ms on one core for specific and combined).
+void BM_HardPipeline(benchmark::State& state)
+{
+    const auto& f = hardFrames();
+    const auto algorithm = static_cast<Algorithm>(state.range(0));
+    PipelineResult r;
+    std::vector<double> ms;
+    int found = 0;
+    for (auto _ : state)
+        for (std::size_t i = 0; i < f.frames; ++i)
+            f.at(i, [&](const HardFrames::Cell& c, std::size_t k) {
+                Pipeline& p = algorithm == Algorithm::Specific ? *c.specific
+                              : algorithm == Algorithm::OpenCv ? *c.opencv
+                                                               : *c.combined;
+                Stopwatch clock;
+                p.process(c.bgr[k], PixelFormat::Bgr8, r);
+                ms.push_back(clock.total());
+                found += r.detection.found;
+            });
+    std::sort(ms.begin(), ms.end());
+    auto percentile = [&](double p) {
+        return ms.empty() ? 0.0 : ms[std::min(ms.size() - 1, std::size_t(p / 100.0 * double(ms.size())))];
+    };
+    state.SetLabel(std::string(algorithmName(algorithm)));
+    state.counters["p50_ms"] = percentile(50);
+    state.counters["p99_ms"] = percentile(99);
+    state.counters["found_pct"] = ms.empty() ? 0.0 : 100.0 * found / double(ms.size());
+    state.SetItemsProcessed(state.iterations() * std::int64_t(f.frames));
+    state.counters["frames_per_iteration"] = double(f.frames);
+}
+
 }  // namespace
 
 BENCHMARK(BM_CvHoughCircles)->Unit(benchmark::kMillisecond);
@@ -204,12 +322,19 @@ BENCHMARK(BM_Pipeline)
     ->Arg(int(omnitune::Algorithm::OpenCv))
     ->Arg(int(omnitune::Algorithm::Combined))
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HardCvHoughCircles)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HardPipeline)
+    ->Arg(int(omnitune::Algorithm::Specific))
+    ->Arg(int(omnitune::Algorithm::OpenCv))
+    ->Arg(int(omnitune::Algorithm::Combined))
+    ->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv)
 {
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    RatioReporter reporter("BM_CvHoughCircles");
+    // Each family against cv::HoughCircles on its own frames (first matching prefix).
+    RatioReporter reporter({{"BM_Hard", "BM_HardCvHoughCircles"}, {"", "BM_CvHoughCircles"}});
     benchmark::RunSpecifiedBenchmarks(&reporter);
     benchmark::Shutdown();
     return 0;

@@ -1,0 +1,88 @@
+#pragma once
+// Runs the detector over the quality matrix (calib/eval/QualityMatrix.h): renders each cell once
+// through the optics simulator, runs every variant (an algorithm, optionally with config keys
+// overridden) with the cell's fitted config, judges each frame by calib/eval/Evaluation.h's rules
+// and tallies per cell; groups (per ball kind, light, distractors, size, overall) add cells up.
+#include "calib/eval/ConfigOverride.h"
+#include "calib/eval/Evaluation.h"
+#include "calib/sim/optics/OpticsCell.h"
+#include "core/Algorithm.h"
+#include "core/Progress.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace omnitune {
+
+// One way of running the detector: an algorithm plus config keys set on top of the fitted config.
+struct QualityVariant {
+    std::string name;  // "specific", or "specific, validation.first_edge_only=false"
+    Algorithm algorithm = Algorithm::Combined;
+    std::vector<ConfigOverride> overrides;
+};
+
+// specific, opencv, combined, each with the fitted config as it is.
+std::vector<QualityVariant> algorithmVariants();
+// For each algorithm in `algorithms`: every deviation switched to the thesis' value on its own,
+// then all of them at once ("thesis" runs). Named "<algorithm>, <key>=<value>" and
+// "<algorithm>, all thesis values".
+std::vector<QualityVariant> deviationVariants(const std::vector<ConfigOverride>& deviations,
+                                              const std::vector<Algorithm>& algorithms);
+
+// What one variant did on a set of frames.
+struct QualityTally {
+    int frames = 0;          // judged frames (ball or not)
+    int withBall = 0;        // frames where the ball is visible
+    int correct = 0;         // ball frames found within the evaluation's max error
+    int falsePositives = 0;  // detections in ball-free frames or too far from the truth
+    // Correct detections of balls within QualityRunOptions::rangeWithinM: detected minus true
+    // horizontal distance from the robot, m.
+    std::vector<double> rangeErrorsM;
+    std::vector<double> timesMs;  // whole pipeline per frame
+
+    void add(const QualityTally& other);
+    double detectionPct() const;      // correct / withBall; 0 without ball frames
+    double falsePositivePct() const;  // falsePositives / frames
+    double rangeBiasCm() const;       // mean of rangeErrorsM; 0 when empty
+    double rangeStdCm() const;        // population std of rangeErrorsM; 0 when empty
+    double timePercentileMs(double p) const;  // nearest rank, p in 0..100; 0 when empty
+};
+
+struct QualityCellResult {
+    OpticsCell cell;
+    std::string name;                 // opticsCellName(cell)
+    std::vector<QualityTally> tallies;  // one per variant, in QualityRun::variants order
+};
+
+struct QualityRunOptions {
+    EvaluationOptions evaluation;  // max error before a detection counts as a false positive
+    double rangeWithinM = 4.0;     // range error is measured on balls this close (issue 9: 4 m)
+    // Cells run on this many threads (each with its own pipelines); 0: one per hardware thread.
+    // Detection and false-positive figures do not depend on it; per-frame times do (threads
+    // share the cores and caches): 1 for timings worth quoting.
+    int threads = 1;
+};
+
+struct QualityRun {
+    std::vector<QualityVariant> variants;
+    std::vector<QualityCellResult> cells;
+    double renderMs = 0.0;  // time spent rendering and calibrating, summed over threads
+};
+
+// Throws std::invalid_argument when a variant's override does not apply, or the pipeline
+// refuses a fitted config (the message names the cell). `progress` may be null; it is called
+// from one thread at a time, and cancelling stops before the next cell (the run then holds
+// the cells finished so far, in matrix order).
+QualityRun runQuality(const std::vector<OpticsCell>& cells, const std::vector<QualityVariant>& variants,
+                      const Config& base = {}, const QualityRunOptions& options = {}, Progress* progress = nullptr);
+
+// One variant summed over the cells `filter` accepts (all when empty).
+QualityTally qualityTotal(const QualityRun& run, std::size_t variant,
+                          const std::function<bool(const OpticsCell&)>& filter = {});
+
+// The ball cell where the variant found the smallest share of balls (first in matrix order on
+// ties); nullptr when no cell has a ball.
+const QualityCellResult* worstQualityCell(const QualityRun& run, std::size_t variant);
+
+}  // namespace omnitune
