@@ -286,7 +286,8 @@ void scoreRunOn(const Circle& c, ValidationScores& s)
 {
     const ValidationOptions& options = c.options;
     const int rays = rayCount(c.radius);
-    const double reach = options.runOnReach * c.radius;
+    // A ball the fit found larger than expected is not its own colour running on.
+    const double reach = options.runOnReach * std::max(c.radius, s.fitRadiusPx);
     int judged = 0;
     int runOn = 0;
     for (int i = 0; i < rays; ++i) {
