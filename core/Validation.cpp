@@ -172,22 +172,34 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
 }
 
 // The circle through `points` (x, y relative to the candidate) by algebraic least squares
-// (Kasa): x^2 + y^2 + D x + E y + F = 0. False when the points do not determine one.
+// (Kasa): x^2 + y^2 + D x + E y + F = 0, its 3x3 normal equations solved by Cramer's rule (no
+// allocation: validation runs on every frame). False when the points do not determine one.
 bool fitCircle(const std::vector<cv::Point2d>& points, cv::Point2d& centre, double& radius)
 {
     if (points.size() < 5) return false;
-    cv::Matx33d a = cv::Matx33d::zeros();
-    cv::Vec3d b(0, 0, 0);
+    double a[3][3] = {};
+    double b[3] = {};
     for (const auto& p : points) {
-        const cv::Vec3d row(p.x, p.y, 1.0);
+        const double row[3] = {p.x, p.y, 1.0};
         const double rhs = -(p.x * p.x + p.y * p.y);
         for (int i = 0; i < 3; ++i) {
-            for (int j = 0; j < 3; ++j) a(i, j) += row[i] * row[j];
+            for (int j = 0; j < 3; ++j) a[i][j] += row[i] * row[j];
             b[i] += row[i] * rhs;
         }
     }
-    cv::Vec3d sol;
-    if (!cv::solve(a, b, sol, cv::DECOMP_CHOLESKY)) return false;
+    auto det = [](const double m[3][3]) {
+        return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    };
+    const double d = det(a);
+    if (!(std::abs(d) > 1e-9)) return false;
+    double sol[3];
+    for (int k = 0; k < 3; ++k) {
+        double m[3][3];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) m[i][j] = j == k ? b[i] : a[i][j];
+        sol[k] = det(m) / d;
+    }
     centre = {-sol[0] / 2.0, -sol[1] / 2.0};
     const double r2 = centre.x * centre.x + centre.y * centre.y - sol[2];
     if (!(r2 > 0.0) || !std::isfinite(r2)) return false;
@@ -195,13 +207,13 @@ bool fitCircle(const std::vector<cv::Point2d>& points, cv::Point2d& centre, doub
     return true;
 }
 
-// The points within `tol` of the circle.
-std::vector<cv::Point2d> nearCircle(const std::vector<cv::Point2d>& points, cv::Point2d centre, double radius, double tol)
+// The points within `tol` of the circle, into `in` (reused).
+void nearCircle(const std::vector<cv::Point2d>& points, cv::Point2d centre, double radius, double tol,
+                std::vector<cv::Point2d>& in)
 {
-    std::vector<cv::Point2d> in;
+    in.clear();
     for (const auto& p : points)
         if (std::abs(std::hypot(p.x - centre.x, p.y - centre.y) - radius) <= tol) in.push_back(p);
-    return in;
 }
 
 // How far the fitted radius and centre may be off the expected ones.
@@ -224,7 +236,10 @@ void scoreCircularity(const Circle& c, ValidationScores& s)
     int hits = 0;
     double hitSum = 0;
     double hitSq = 0;
-    std::vector<cv::Point2d> points;
+    // Reused between candidates and frames: a warm pipeline allocates nothing.
+    thread_local std::vector<cv::Point2d> points;
+    thread_local std::vector<cv::Point2d> in;
+    points.clear();
     for (int i = 0; i < rays; ++i) {
         const double a = 2.0 * M_PI * i / rays;
         const double ca = std::cos(a);
@@ -249,10 +264,10 @@ void scoreCircularity(const Circle& c, ValidationScores& s)
     cv::Point2d centre(0, 0);
     double radius = c.radius;
     const double allowance = fitAllowance(c.radius, options);
-    std::vector<cv::Point2d> in = nearCircle(points, centre, radius, allowance);
+    nearCircle(points, centre, radius, allowance, in);
     for (double tol : {2.0 * band, band}) {
         if (!fitCircle(in, centre, radius)) return;
-        in = nearCircle(points, centre, radius, tol);
+        nearCircle(points, centre, radius, tol, in);
     }
     s.fitRadiusPx = radius;
     s.fitDx = centre.x;
