@@ -17,7 +17,7 @@ CarpetColour CarpetColour::around(const FrameColour& frame, const cv::Mat& class
     const int step = std::max(1, reach / 10);
     const double in2 = inner * inner;
     const double out2 = outer * outer;
-    double sh = 0, ss = 0, sh2 = 0, ss2 = 0;
+    double sh = 0, ss = 0, sh2 = 0, ss2 = 0, sv = 0, sv2 = 0;
     for (int dy = -reach; dy <= reach; dy += step) {
         const int yy = y + dy;
         if (yy < 0 || yy >= classes.rows) continue;
@@ -32,6 +32,8 @@ CarpetColour CarpetColour::around(const FrameColour& frame, const cv::Mat& class
             ss += c.s;
             sh2 += double(c.h) * c.h;
             ss2 += double(c.s) * c.s;
+            sv += c.v;
+            sv2 += double(c.v) * c.v;
             ++cc.samples_;
         }
     }
@@ -41,6 +43,8 @@ CarpetColour CarpetColour::around(const FrameColour& frame, const cv::Mat& class
     cc.sat_ = ss / n;
     cc.hueSpread_ = std::sqrt(std::max(0.0, sh2 / n - cc.hue_ * cc.hue_));
     cc.satSpread_ = std::sqrt(std::max(0.0, ss2 / n - cc.sat_ * cc.sat_));
+    cc.val_ = sv / n;
+    cc.valSpread_ = std::sqrt(std::max(0.0, sv2 / n - cc.val_ * cc.val_));
     return cc;
 }
 
@@ -51,7 +55,8 @@ bool CarpetColour::matches(const Hsv& c, const CarpetTolerance& t) const
     dh = std::min(dh, 180.0 - dh);
     const double hueTol = std::max(t.hue, t.sigmas * hueSpread_);
     const double satTol = std::max(t.saturation, t.sigmas * satSpread_);
-    return dh <= hueTol && std::abs(c.s - sat_) <= satTol;
+    if (dh > hueTol || std::abs(c.s - sat_) > satTol) return false;
+    return t.value <= 0 || std::abs(c.v - val_) <= std::max(t.value, t.sigmas * valSpread_);
 }
 
 }  // namespace omnitune

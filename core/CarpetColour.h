@@ -16,6 +16,9 @@ struct CarpetTolerance {
     double sigmas = 3.0;     // spreads of the ring's own colour a carpet pixel may differ by
     double hue = 8.0;        // hue units (0..179); never tighter than this
     double saturation = 40;  // 0..255; never tighter than this
+    // 0..255; brightness is judged too when positive (never tighter than this). Off by default:
+    // shadows on the carpet differ from it by brightness alone.
+    double value = 0;
 };
 
 class CarpetColour {
@@ -39,8 +42,10 @@ private:
     int samples_ = 0;
     double hue_ = 0;
     double sat_ = 0;
+    double val_ = 0;
     double hueSpread_ = 0;
     double satSpread_ = 0;
+    double valSpread_ = 0;
 };
 
 }  // namespace omnitune

@@ -262,6 +262,10 @@ std::vector<ConfigKey> buildSchema()
     s.push_back(doubleKey("validation.carpet_saturation_tolerance", "saturation (0-255)", 0, 255, false,
                           "carpet_by_colour: the saturation tolerance is never tighter than this",
                           [](auto& c) -> auto& { return c.validation.carpetTolerance.saturation; }));
+    s.push_back(doubleKey("validation.carpet_value_tolerance", "value (0-255)", 0, 255, false,
+                          "carpet_by_colour: brightness is judged too when above 0 (never tighter than this); tells a shaded green "
+                          "panel from the carpet, but also a shadow on the carpet",
+                          [](auto& c) -> auto& { return c.validation.carpetTolerance.value; }));
     {
         ConfigKey hint{"validation.ball_hint_class", ValueType::Choice, "", 0, 0,
                        "The ball's colour class when known: where enough of its square has it (ball_hint_min_pct), the non-green and "

@@ -371,6 +371,22 @@ private slots:
         QVERIFY2(off.rejected == RejectReason::NonGreen, qPrintable(verdict(off)));
     }
 
+    // Green panels of the carpet's own hue and saturation, told apart only by brightness (the
+    // optics renderer's green-and-white ball): validation.carpet_value_tolerance judges it.
+    void darkGreenPanelsNeedTheValueTolerance()
+    {
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 130, 200, kWhite);
+        const int r = int(std::lround(expectedRadius(c, 130)));
+        for (int k = 0; k < 4; ++k)
+            cv::ellipse(frame, p, cv::Size(r, r), 0, 90.0 * k, 90.0 * k + 45.0, kGreen * 0.5, cv::FILLED);
+        QCOMPARE(validateFrame(c, frame, p).rejected, RejectReason::NonGreen);
+        c.validation.carpetTolerance.value = 30;
+        const BallCandidate on = validateFrame(c, frame, p);
+        QVERIFY2(on.rejected == RejectReason::None, qPrintable(verdict(on)));
+    }
+
     // Carpet by colour still sees carpet as carpet: noisy, vignetted carpet with a green speck
     // is rejected as before, and a disc of the carpet's own green (a lighter patch) is no ball.
     void carpetByColourKeepsCarpetGreen()
