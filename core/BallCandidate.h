@@ -29,6 +29,12 @@ struct ValidationScores {
     double borderSpreadPx = 0.0; // std of the radius at which those rays met the edge
     double runOnPct = 0.0;       // % of the judged rays along which the centre's colour class runs
                                  // on beyond the circle (validation.max_run_on_pct)
+    // validation.circle_fit: the circle fitted to the border points (0 when none was fitted);
+    // centre relative to the candidate, px.
+    double fitRadiusPx = 0.0;
+    double fitDx = 0.0;
+    double fitDy = 0.0;
+    double hintPct = 0.0;        // % of processed square pixels of validation.ball_hint_class
 };
 
 struct BallCandidate {

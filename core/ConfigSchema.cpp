@@ -233,6 +233,60 @@ std::vector<ConfigKey> buildSchema()
                           "How far beyond a ray's edge its colour is read (border_into_carpet, ignore_occluded_rays); smaller: reads "
                           "the blurred border itself, larger: reaches a neighbouring line or robot",
                           [](auto& c) -> auto& { return c.validation.beyondEdgePx; }));
+    s.push_back(boolKey("validation.masked_rays_unknown", false,
+                        "Rays that reach masked or out-of-mirror pixels before the ball's border are left out of the circularity, so a ball "
+                        "half behind a rod is judged on its visible half; off: they count as misses",
+                        [](auto& c) -> auto& { return c.validation.maskedRaysUnknown; }));
+    s.push_back(boolKey("validation.circle_fit", false,
+                        "Circularity around a circle fitted to the rays' borders (a ball the radius model misjudges by a few px, a blurred "
+                        "ball, still pass; the fitted radius and centre must be within fit_max_radius_error(_px)); off: the thesis' band "
+                        "around the expected radius",
+                        [](auto& c) -> auto& { return c.validation.circleFit; }));
+    s.push_back(doubleKey("validation.fit_max_radius_error_px", "px", 0, 20, false,
+                          "circle_fit: how far the fitted radius and centre may be off the expected ones (or fit_max_radius_error "
+                          "of the radius, whichever is larger); larger accepts round things of other sizes",
+                          [](auto& c) -> auto& { return c.validation.fitMaxRadiusErrorPx; }));
+    s.push_back(doubleKey("validation.fit_max_radius_error", "fraction", 0, 1, false,
+                          "circle_fit: the same allowance as a fraction of the expected radius (near, big balls)",
+                          [](auto& c) -> auto& { return c.validation.fitMaxRadiusError; }));
+    s.push_back(boolKey("validation.carpet_by_colour", false,
+                        "Green pixels are carpet only when their hue and saturation match the carpet measured around the candidate; "
+                        "green panels of a ball then count as ball (non-green test, borders); off: every green pixel is carpet",
+                        [](auto& c) -> auto& { return c.validation.carpetByColour; }));
+    s.push_back(doubleKey("validation.carpet_colour_sigmas", "spreads", 0, 10, false,
+                          "carpet_by_colour: a pixel is carpet within this many spreads of the surrounding carpet's hue and saturation",
+                          [](auto& c) -> auto& { return c.validation.carpetTolerance.sigmas; }));
+    s.push_back(doubleKey("validation.carpet_hue_tolerance", "hue (0-179)", 0, 90, false,
+                          "carpet_by_colour: the hue tolerance is never tighter than this; smaller tells closer greens apart, and noise "
+                          "from the carpet",
+                          [](auto& c) -> auto& { return c.validation.carpetTolerance.hue; }));
+    s.push_back(doubleKey("validation.carpet_saturation_tolerance", "saturation (0-255)", 0, 255, false,
+                          "carpet_by_colour: the saturation tolerance is never tighter than this",
+                          [](auto& c) -> auto& { return c.validation.carpetTolerance.saturation; }));
+    s.push_back(doubleKey("validation.carpet_value_tolerance", "value (0-255)", 0, 255, false,
+                          "carpet_by_colour: brightness is judged too when above 0 (never tighter than this); tells a shaded green "
+                          "panel from the carpet, but also a shadow on the carpet",
+                          [](auto& c) -> auto& { return c.validation.carpetTolerance.value; }));
+    {
+        ConfigKey hint{"validation.ball_hint_class", ValueType::Choice, "", 0, 0,
+                       "The ball's colour class when known: where enough of its square has it (ball_hint_min_pct), the non-green and "
+                       "non-black tests are passed; none: no hint",
+                       {"none", "white", "black", "orange", "cyan", "magenta"}, false, {}, {}};
+        hint.get = [](const Config& c) {
+            const ColorClass h = c.validation.ballHint;
+            return ConfigValue(std::string(h == ColorClass::Unknown ? "none" : colorClassKey(h)));
+        };
+        hint.set = [](Config& c, const ConfigValue& v) {
+            const std::string& name = std::get<std::string>(v);
+            c.validation.ballHint = ColorClass::Unknown;
+            for (ColorClass k : kClassificationOrder)
+                if (colorClassKey(k) == name && k != ColorClass::Green) c.validation.ballHint = k;
+        };
+        s.push_back(std::move(hint));
+    }
+    s.push_back(doubleKey("validation.ball_hint_min_pct", "%", 0, 100, false,
+                          "ball_hint_class: share of the square's processed pixels of that class that counts as the ball's colour",
+                          [](auto& c) -> auto& { return c.validation.ballHintMinPct; }));
 
     // algorithm
     ConfigKey alg{"algorithm.method", ValueType::Choice, "", 0, 0,

@@ -2,6 +2,7 @@
 
 #include "core/BallPosition.h"
 #include "core/ConfigSchema.h"
+#include "core/FrameColour.h"
 #include "core/FrontEnd.h"
 #include "core/Stopwatch.h"
 
@@ -122,13 +123,14 @@ struct Pipeline::Impl {
     OpenCvHough opencvHough;
     cv::Mat binary;
     cv::Mat edges;
+    const FrameColour* colour = nullptr;  // the frame being processed, for validation
 
     const Geometry& geometry() const { return frontEnd.geometry(); }
 
     void validateFrom(std::size_t first, PipelineResult& r)
     {
         for (std::size_t i = first; i < r.candidates.size(); ++i)
-            validateCandidate(r.candidates[i], r.classes, edges, geometry(), ball, config.validation);
+            validateCandidate(r.candidates[i], r.classes, edges, geometry(), ball, config.validation, colour);
     }
 
     // Thesis 4.1: candidates from the specific Hough transform, validated.
@@ -198,7 +200,10 @@ void Pipeline::process(const cv::Mat& frame, PixelFormat format, PipelineResult&
     Stopwatch clock;
     p.frontEnd.process(frame, format, r.classes, p.binary, p.edges, &r.timings);
     clock.lap();  // the front end timed its own stages
+    const FrameColour colour(frame, format);
+    p.colour = &colour;
     p.searchBall(r, clock);
+    p.colour = nullptr;
     const int best = chooseCandidate(r.candidates);
     if (best >= 0)
         r.detection = detectionOf(r.candidates[std::size_t(best)], best, p.config.geometry, p.distanceMap);

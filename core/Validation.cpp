@@ -16,6 +16,9 @@ namespace {
 // Circle search rays: about one per pixel of circumference, never fewer than 16.
 int rayCount(double radius) { return std::max(16, int(std::ceil(2.0 * M_PI * radius))); }
 
+// px; how wide the blend of ball and carpet colours at a border may be (7 px motion blur, optics).
+constexpr double kBlendPx = 3.0;
+
 // The circle being scored and the images it is scored on.
 struct Circle {
     int x;
@@ -24,7 +27,11 @@ struct Circle {
     const cv::Mat& classes;
     const cv::Mat& edges;
     const Geometry& geometry;
+    const ValidationOptions& options;
+    const FrameColour* colour;  // null: colours unknown, every green pixel is carpet
+    CarpetColour carpet;        // measured around the circle when carpetByColour
 
+    bool byColour() const { return colour && options.carpetByColour && carpet.valid(); }
     // Inside the image and processed: its class and edge say something about the scene.
     bool known(cv::Point p) const
     {
@@ -32,6 +39,25 @@ struct Circle {
     }
     ColorClass classAt(cv::Point p) const { return ColorClass(classes.ptr<std::uint8_t>(p.y)[p.x]); }
     bool edgeAt(cv::Point p) const { return edges.ptr<std::uint8_t>(p.y)[p.x] != 0; }
+    // A known pixel of the carpet: green, and (carpetByColour) of the carpet's own green.
+    bool carpetAt(cv::Point p) const
+    {
+        if (classAt(p) != ColorClass::Green) return false;
+        return !byColour() || carpet.matches(colour->hsvAt(p.x, p.y), options.carpetTolerance);
+    }
+    // Carpet lies a little farther out than beyondEdgePx: the border's blend of ball and carpet
+    // colours (motion blur, optics) is green by class but not the carpet's green yet.
+    bool carpetFollows(double r, double ca, double sa) const
+    {
+        for (double d = 1.0; d <= kBlendPx; d += 1.0) {
+            const cv::Point p = along(r + options.beyondEdgePx + d, ca, sa);
+            if (!known(p)) return true;
+            if (carpetAt(p)) return true;
+        }
+        return false;
+    }
+    // Green class but not the carpet's green: part of the ball.
+    bool ballGreenAt(cv::Point p) const { return classAt(p) == ColorClass::Green && !carpetAt(p); }
     // The pixel `r` px out from the centre in the unit direction (ca, sa).
     cv::Point along(double r, double ca, double sa) const
     {
@@ -40,49 +66,56 @@ struct Circle {
 };
 
 // Thesis' first two tests: the non-green and non-black shares of the processed pixels in the
-// candidate's square.
+// candidate's square (and the share of the hinted ball colour).
 void scoreSquare(const Circle& c, int squareSide, ValidationScores& s)
 {
     const int half = squareSide / 2;
     int used = 0;
     int green = 0;
     int black = 0;
+    int hint = 0;
+    const bool byColour = c.byColour();
     for (int yy = std::max(0, c.y - half); yy <= std::min(c.classes.rows - 1, c.y + half); ++yy) {
         const std::uint8_t* cls = c.classes.ptr<std::uint8_t>(yy);
         const std::uint8_t* u = c.geometry.usedMask().ptr<std::uint8_t>(yy);
         for (int xx = std::max(0, c.x - half); xx <= std::min(c.classes.cols - 1, c.x + half); ++xx) {
             if (!u[xx]) continue;
             ++used;
-            green += cls[xx] == std::uint8_t(ColorClass::Green);
+            if (cls[xx] == std::uint8_t(ColorClass::Green))
+                green += !byColour || c.carpetAt({xx, yy});
             black += cls[xx] == std::uint8_t(ColorClass::Black);
+            hint += c.options.ballHint != ColorClass::Unknown && cls[xx] == std::uint8_t(c.options.ballHint);
         }
     }
     if (used > 0) {
         s.nonGreenPct = 100.0 * (used - green) / used;
         s.nonBlackPct = 100.0 * (used - black) / used;
+        s.hintPct = 100.0 * hint / used;
     }
 }
 
 // What one ray of the circularity test found.
 struct BorderRay {
-    bool anyUsed = false;    // it crossed a processed pixel (else it says nothing of the shape)
+    bool judged = false;     // it says something of the shape (else it is left out)
     bool hit = false;        // the ball's border lies in the search band
     bool occluded = false;   // the border leads into a robot: the ray is not judged
     double hitRadius = 0.0;  // px from the centre, when hit
 };
 
 // Walks one ray out from the centre (from the band's inner side when any edge in the band
-// counts) and looks for the ball's border between rMin and rMax.
-BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double rMax, const ValidationOptions& options)
+// counts) and looks for the ball's border between rMin and rMax. With circleFit the border is
+// the first edge into carpet anywhere up to rMax (edges into the ball's own colours are its
+// inside); rMin is then only the fit's business.
+BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double rMax)
 {
+    const ValidationOptions& options = c.options;
     BorderRay ray;
-    auto edgeAt = [&](cv::Point p) {
-        if (!c.known(p)) return false;
-        ray.anyUsed = true;
-        return c.edgeAt(p);
-    };
+    bool anyUsed = false;     // it crossed a processed pixel
+    bool sawUnknown = false;  // it crossed a masked or out-of-mirror pixel
+    bool prevBallGreen = false;
+    auto edgeAt = [&](cv::Point p) { return c.known(p) && c.edgeAt(p); };
     cv::Point last(INT_MIN, INT_MIN);
-    const double rStart = options.firstEdgeOnly ? 0.5 : rMin;
+    const double rStart = options.firstEdgeOnly || options.circleFit ? 0.5 : rMin;
     bool blocked = false;  // an edge inside the band came first
     for (double r = rStart; r <= rMax + 1e-9 && !ray.hit && !blocked; r += 0.5) {
         const cv::Point p = c.along(r, ca, sa);
@@ -92,8 +125,19 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
         bool edge = false;
         if (last.x != INT_MIN && p.x != last.x && p.y != last.y)
             edge = edgeAt({p.x, last.y}) || edgeAt({last.x, p.y});
-        edge = edgeAt(p) || edge;
         last = p;
+        if (!c.known(p)) {
+            sawUnknown = true;
+            prevBallGreen = false;
+            if (!edge) continue;
+        } else {
+            anyUsed = true;
+            edge = c.edgeAt(p) || edge;
+            // The ball's green meeting the carpet's green: the binary image has no edge there.
+            const bool ballGreen = c.byColour() && c.ballGreenAt(p);
+            if (!edge && prevBallGreen && c.carpetAt(p)) edge = true;
+            prevBallGreen = ballGreen;
+        }
         if (!edge) continue;
         // What lies just beyond the edge: carpet for a ball's border, a robot (black) when the
         // ball is partly hidden behind one: such a ray says nothing of the shape.
@@ -104,10 +148,13 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
             ray.occluded = true;
             return ray;
         }
-        if (r < rMin - 1e-9) {
+        const bool intoCarpet = !beyondKnown || c.carpetAt(b) || (beyond == ColorClass::Green && c.carpetFollows(r, ca, sa));
+        if (options.circleFit) {
+            ray.hit = !options.borderIntoCarpet || intoCarpet;  // else an edge inside the ball
+        } else if (r < rMin - 1e-9) {
             blocked = true;
         } else if (options.borderIntoCarpet) {
-            ray.hit = !beyondKnown || beyond == ColorClass::Green;
+            ray.hit = intoCarpet;
             blocked = !ray.hit;
         } else {
             ray.hit = true;
@@ -119,33 +166,113 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
         const cv::Point e = c.along(rMax, ca, sa);
         ray.occluded = c.known(e) && c.classAt(e) == ColorClass::Black;
     }
+    // A ray that found no border after passing unknown pixels may have lost it behind the mask.
+    ray.judged = anyUsed && (ray.hit || blocked || !(sawUnknown && options.maskedRaysUnknown));
     return ray;
 }
 
-// Thesis' third test: the share of the usable rays that find the ball's border in the band
-// around the expected radius, and how much the border's radius spreads.
-void scoreCircularity(const Circle& c, const ValidationOptions& options, ValidationScores& s)
+// The circle through `points` (x, y relative to the candidate) by algebraic least squares
+// (Kasa): x^2 + y^2 + D x + E y + F = 0, its 3x3 normal equations solved by Cramer's rule (no
+// allocation: validation runs on every frame). False when the points do not determine one.
+bool fitCircle(const std::vector<cv::Point2d>& points, cv::Point2d& centre, double& radius)
 {
+    if (points.size() < 5) return false;
+    double a[3][3] = {};
+    double b[3] = {};
+    for (const auto& p : points) {
+        const double row[3] = {p.x, p.y, 1.0};
+        const double rhs = -(p.x * p.x + p.y * p.y);
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) a[i][j] += row[i] * row[j];
+            b[i] += row[i] * rhs;
+        }
+    }
+    auto det = [](const double m[3][3]) {
+        return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    };
+    const double d = det(a);
+    if (!(std::abs(d) > 1e-9)) return false;
+    double sol[3];
+    for (int k = 0; k < 3; ++k) {
+        double m[3][3];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) m[i][j] = j == k ? b[i] : a[i][j];
+        sol[k] = det(m) / d;
+    }
+    centre = {-sol[0] / 2.0, -sol[1] / 2.0};
+    const double r2 = centre.x * centre.x + centre.y * centre.y - sol[2];
+    if (!(r2 > 0.0) || !std::isfinite(r2)) return false;
+    radius = std::sqrt(r2);
+    return true;
+}
+
+// The points within `tol` of the circle, into `in` (reused).
+void nearCircle(const std::vector<cv::Point2d>& points, cv::Point2d centre, double radius, double tol,
+                std::vector<cv::Point2d>& in)
+{
+    in.clear();
+    for (const auto& p : points)
+        if (std::abs(std::hypot(p.x - centre.x, p.y - centre.y) - radius) <= tol) in.push_back(p);
+}
+
+// How far the fitted radius and centre may be off the expected ones.
+double fitAllowance(double radius, const ValidationOptions& options)
+{
+    return std::max(options.fitMaxRadiusErrorPx, options.fitMaxRadiusError * radius);
+}
+
+// Thesis' third test: the share of the usable rays that find the ball's border in the band
+// around the expected radius (circleFit: around the fitted circle), and how much the border's
+// radius spreads.
+void scoreCircularity(const Circle& c, ValidationScores& s)
+{
+    const ValidationOptions& options = c.options;
     const double band = std::max(options.radiusTolerance * c.radius, options.minRadiusBandPx);
     const double rMin = std::max(0.5, c.radius - band);
-    const double rMax = c.radius + band;
+    const double rMax = options.circleFit ? c.radius + fitAllowance(c.radius, options) + band : c.radius + band;
     const int rays = rayCount(c.radius);
     int usable = 0;
     int hits = 0;
     double hitSum = 0;
     double hitSq = 0;
+    // Reused between candidates and frames: a warm pipeline allocates nothing.
+    thread_local std::vector<cv::Point2d> points;
+    thread_local std::vector<cv::Point2d> in;
+    points.clear();
     for (int i = 0; i < rays; ++i) {
         const double a = 2.0 * M_PI * i / rays;
-        const BorderRay ray = traceBorder(c, std::cos(a), std::sin(a), rMin, rMax, options);
-        if (ray.occluded) continue;
-        usable += ray.anyUsed;
+        const double ca = std::cos(a);
+        const double sa = std::sin(a);
+        const BorderRay ray = traceBorder(c, ca, sa, rMin, rMax);
+        if (ray.occluded || !ray.judged) continue;
+        ++usable;
         if (!ray.hit) continue;
         ++hits;
         hitSum += ray.hitRadius;
         hitSq += ray.hitRadius * ray.hitRadius;
+        points.emplace_back(ray.hitRadius * ca, ray.hitRadius * sa);
     }
-    if (usable > 0 && usable >= options.minUsableRayShare * rays) s.circularityPct = 100.0 * hits / usable;
     if (hits > 0) s.borderSpreadPx = std::sqrt(std::max(0.0, hitSq / hits - (hitSum / hits) * (hitSum / hits)));
+    if (usable == 0 || usable < options.minUsableRayShare * rays) return;
+    if (!options.circleFit) {
+        s.circularityPct = 100.0 * hits / usable;
+        return;
+    }
+    // Start from the expected circle, so that strays (a line beyond the ball) do not pull the
+    // first fit; then refit to the points near each fit.
+    cv::Point2d centre(0, 0);
+    double radius = c.radius;
+    const double allowance = fitAllowance(c.radius, options);
+    nearCircle(points, centre, radius, allowance, in);
+    for (double tol : {2.0 * band, band}) {
+        if (!fitCircle(in, centre, radius)) return;
+        nearCircle(points, centre, radius, tol, in);
+    }
+    s.fitRadiusPx = radius;
+    s.fitDx = centre.x;
+    s.fitDy = centre.y;
+    s.circularityPct = 100.0 * double(in.size()) / usable;
 }
 
 // Whether the centre's colour class goes on without a break along one ray out to `reach` px;
@@ -170,10 +297,12 @@ std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double re
 // Our run-on test: the share of judged rays along which the centre's colour runs on beyond the
 // circle. A line corner or line end continues as line; a ball on carpet (or beside a line) has
 // carpet just outside it, and a ball never continues in its own colour.
-void scoreRunOn(const Circle& c, const ValidationOptions& options, ValidationScores& s)
+void scoreRunOn(const Circle& c, ValidationScores& s)
 {
+    const ValidationOptions& options = c.options;
     const int rays = rayCount(c.radius);
-    const double reach = options.runOnReach * c.radius;
+    // A ball the fit found larger than expected is not its own colour running on.
+    const double reach = options.runOnReach * std::max(c.radius, s.fitRadiusPx);
     int judged = 0;
     int runOn = 0;
     for (int i = 0; i < rays; ++i) {
@@ -190,9 +319,17 @@ void scoreRunOn(const Circle& c, const ValidationOptions& options, ValidationSco
 RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& options)
 {
     if (c.expectedRadiusPx < options.minRadiusPx) return RejectReason::TooSmall;
-    if (c.scores.nonGreenPct < options.minNonGreenPct) return RejectReason::NonGreen;
-    if (c.scores.nonBlackPct < options.minNonBlackPct) return RejectReason::NonBlack;
+    // The known ball colour shows the candidate is neither carpet nor robot.
+    const bool hinted = options.ballHint != ColorClass::Unknown && c.scores.hintPct >= options.ballHintMinPct;
+    if (!hinted && c.scores.nonGreenPct < options.minNonGreenPct) return RejectReason::NonGreen;
+    if (!hinted && c.scores.nonBlackPct < options.minNonBlackPct) return RejectReason::NonBlack;
     if (c.scores.circularityPct < options.minCircularityPct) return RejectReason::Circularity;
+    if (options.circleFit) {
+        const double allowance = fitAllowance(c.expectedRadiusPx, options);
+        if (std::abs(c.scores.fitRadiusPx - c.expectedRadiusPx) > allowance ||
+            std::hypot(c.scores.fitDx, c.scores.fitDy) > allowance)
+            return RejectReason::Circularity;
+    }
     if (c.scores.runOnPct > options.maxRunOnPct) return RejectReason::RunsOn;
     return RejectReason::None;
 }
@@ -200,22 +337,28 @@ RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& op
 }  // namespace
 
 ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,
-                             const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options)
+                             const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options,
+                             const FrameColour* colour)
 {
-    const Circle circle{x, y, radius, classes, edges, geometry};
+    Circle circle{x, y, radius, classes, edges, geometry, options, colour, {}};
+    if (colour && options.carpetByColour) {
+        CV_Assert(colour->frame().size() == classes.size());
+        // Past the ball's blurred border and its contact shadow, before the next object.
+        circle.carpet = CarpetColour::around(*colour, classes, geometry, x, y, 1.5 * radius + 1.0, 2.5 * radius + 2.0);
+    }
     ValidationScores s;
     scoreSquare(circle, squareSide, s);
-    scoreCircularity(circle, options, s);
-    scoreRunOn(circle, options, s);
+    scoreCircularity(circle, s);
+    scoreRunOn(circle, s);
     return s;
 }
 
 void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry,
-                       const BallModel& ball, const ValidationOptions& options)
+                       const BallModel& ball, const ValidationOptions& options, const FrameColour* colour)
 {
     CV_Assert(classes.type() == CV_8UC1 && edges.type() == CV_8UC1 && classes.size() == edges.size());
     c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, ball.squareSizeAt(c.distancePx), classes, edges,
-                           geometry, options);
+                           geometry, options, colour);
     if (c.rejected != RejectReason::None) return;  // already out (outside the area, too large)
     c.rejected = firstFailedTest(c, options);
 }

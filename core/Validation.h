@@ -2,6 +2,8 @@
 // Thesis section 4.4: a candidate is a ball only if, in its square, enough pixels are
 // non-green and non-black, and enough of its circle is present as edges (circularity).
 #include "core/BallCandidate.h"
+#include "core/CarpetColour.h"
+#include "core/ColorClass.h"
 
 #include <opencv2/core.hpp>
 
@@ -56,16 +58,48 @@ struct ValidationOptions {
     // px; how far beyond a ray's edge its colour is read for borderIntoCarpet and
     // ignoreOccludedRays: past the edge's own blurred pixel, still next to the ball.
     double beyondEdgePx = 1.5;
+    // A ray that walks into masked or out-of-mirror pixels before it meets the ball's border is
+    // left out of the circularity, like a ray whose band is all masked: a ball half behind a rod
+    // is judged on its visible half. Off: such a ray counts as a miss (the earlier rule).
+    bool maskedRaysUnknown = true;
+
+    // Circularity by a circle fit: each ray's first border into carpet within a wide range
+    // (expected radius + fitMaxRadiusErrorPx) is a point; a circle is fitted to the points
+    // (robust to a few strays) and the circularity is the share of the usable rays whose point
+    // lies within the band of the *fitted* circle. The candidate also fails circularity when
+    // the fitted radius or centre is more than max(fitMaxRadiusErrorPx, fitMaxRadiusError x
+    // expected radius) off. A ball the radius model misjudges by 2-3 px, or a candidate 2 px off
+    // its ball, passes; a straight edge or corner has no circle through its border points.
+    // Off: the thesis' fixed band around the expected radius.
+    bool circleFit = true;
+    double fitMaxRadiusErrorPx = 3.0;  // px
+    double fitMaxRadiusError = 0.25;   // fraction of the expected radius
+
+    // Green pixels count as carpet (non-green test, borders into carpet) only when their hue and
+    // saturation match the carpet measured around the candidate (CarpetColour): green panels of
+    // a ball, or its shaded green side, are then ball. Needs the frame's colours (validateCandidate
+    // with a FrameColour); without them, or with too little carpet around, every green is carpet.
+    bool carpetByColour = true;
+    CarpetTolerance carpetTolerance;
+
+    // The ball's colour class when the team knows it (Unknown: no hint). When at least
+    // ballHintMinPct of the square's processed pixels have that class, the colour tests (non-green,
+    // non-black) are passed: the ball's own colour shows it is neither carpet nor robot. The shape
+    // tests still apply. Never required.
+    ColorClass ballHint = ColorClass::Unknown;
+    double ballHintMinPct = 15.0;  // %
 };
 
 // Scores one candidate and sets its `rejected` field (first failing test: too small, then the
 // thesis order non-green, non-black, circularity, then our run-on test). `classes` holds colour
-// class ids, `edges` the edge image.
+// class ids, `edges` the edge image, `colour` (optional) the frame's colours for carpetByColour.
 void validateCandidate(BallCandidate& candidate, const cv::Mat& classes, const cv::Mat& edges,
-                       const Geometry& geometry, const BallModel& ball, const ValidationOptions& options);
+                       const Geometry& geometry, const BallModel& ball, const ValidationOptions& options,
+                       const FrameColour* colour = nullptr);
 
 // The scores alone, for a circle at (x, y) of the given radius and square side.
 ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,
-                             const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options);
+                             const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options,
+                             const FrameColour* colour = nullptr);
 
 }  // namespace omnitune

@@ -211,6 +211,7 @@ private slots:
         QVERIFY(slider->hasMark(0, FrameMarkKind::Detected));
 
         QVERIFY(!window.document()->setValue("validation.min_circularity_pct", ConfigValue(100.0)));
+        QVERIFY(!window.document()->setValue("validation.circle_fit", ConfigValue(false)));  // thesis' band
         const auto r = applyInWindow(window);
         QVERIFY(r);
         QVERIFY2(r->ok(), r->error.c_str());

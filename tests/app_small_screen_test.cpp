@@ -155,6 +155,7 @@ private slots:
     void sweepResultDocksBesideThePanes()
     {
         QVERIFY(!window_->document()->setValue("validation.min_circularity_pct", ConfigValue(100.0)));
+        QVERIFY(!window_->document()->setValue("validation.circle_fit", ConfigValue(false)));  // thesis' band
         const QRect panesBefore = globalRect(window_->pipelineView());
         window_->findChild<QAction*>("applyToSession")->trigger();
         auto* panel = window_->findChild<SessionSweepPanel*>();

@@ -82,6 +82,7 @@ private slots:
         ConfigComparisonRequest request = demoRequest();
         request.savedConfig = demoConfig();  // loaded by the caller: the path only names it
         request.current.validation.minCircularityPct = 100.0;
+        request.current.validation.circleFit = false;  // the thesis' band: a fitted circle takes every demo ball
         ConfigComparisonResult r;
         runConfigComparison(request, r);
         QVERIFY2(r.ok(), r.error.c_str());

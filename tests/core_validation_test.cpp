@@ -1,7 +1,10 @@
 // Candidate validation (thesis 4.4): non-green, non-black and circularity tests, each shown
 // rejecting the look-alike it exists for.
 #include "DrawnScene.h"
+#include "core/FrameColour.h"
 #include "core/Validation.h"
+
+#include <opencv2/imgproc.hpp>
 
 #include <QtTest>
 
@@ -14,12 +17,16 @@ namespace {
 // "rejected by runs on (scores 100 / 100 / 92, run-on 40)": for failure messages.
 QString verdict(const BallCandidate& c)
 {
-    return QString("rejected by %1 (scores %2 / %3 / %4, run-on %5)")
+    return QString("rejected by %1 (scores %2 / %3 / %4, run-on %5, fit r %6 of %7 at %8, %9)")
         .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
         .arg(c.scores.nonGreenPct)
         .arg(c.scores.nonBlackPct)
         .arg(c.scores.circularityPct)
-        .arg(c.scores.runOnPct);
+        .arg(c.scores.runOnPct)
+        .arg(c.scores.fitRadiusPx)
+        .arg(c.expectedRadiusPx)
+        .arg(c.scores.fitDx)
+        .arg(c.scores.fitDy);
 }
 
 // An unvalidated candidate centred on `p`, with the distance and expected radius there.
@@ -55,6 +62,34 @@ BallCandidate validateAt(double distance, double angle, Draw draw)
     validateCandidate(cand, s.classes, s.edges, s.geometry, s.ball, c.validation);
     return cand;
 }
+
+// A candidate at `centre` validated on `frame` with the frame's colours, under `c`.
+BallCandidate validateFrame(const Config& c, const cv::Mat& frame, cv::Point centre)
+{
+    const EdgeStages s(c, frame);
+    BallCandidate cand = candidateAt(s, centre);
+    const FrameColour colour(frame, PixelFormat::Bgr8);
+    validateCandidate(cand, s.classes, s.edges, s.geometry, s.ball, c.validation, &colour);
+    return cand;
+}
+
+// Blurs `frame` along x by `length` px (a ball rolling across the image) and adds sensor noise.
+void blurAndNoise(cv::Mat& frame, int length, double sigma)
+{
+    const cv::Mat kernel = cv::Mat::ones(1, length, CV_32F) / float(length);
+    cv::filter2D(frame, frame, -1, kernel);
+    cv::Mat noise(frame.size(), CV_16SC3);
+    cv::theRNG().state = 7;
+    cv::randn(noise, cv::Scalar::all(0), cv::Scalar::all(sigma));
+    cv::Mat f16;
+    frame.convertTo(f16, CV_16SC3);
+    f16 += noise;
+    f16.convertTo(frame, CV_8UC3);
+}
+
+// Green panels of a green-and-white ball: not the carpet's green (hue 44 against 60, more
+// saturated), but inside the green class.
+const cv::Scalar kPanelGreen(30, 200, 120);
 
 }  // namespace
 
@@ -220,6 +255,7 @@ private slots:
         QVERIFY2(score(c.validation).circularityPct > 30, qPrintable(QString::number(score(c.validation).circularityPct)));
         ValidationOptions allRays = c.validation;
         allRays.minUsableRayShare = 1.0;
+        allRays.maskedRaysUnknown = false;  // else rays into the mask are left out, not missed
         QCOMPARE(score(allRays).circularityPct, 0.0);
     }
 
@@ -236,8 +272,196 @@ private slots:
         auto score = [&](const ValidationOptions& o) { return scoresAt(s, p, o); };
         QVERIFY2(score(c.validation).circularityPct > 70, qPrintable(QString::number(score(c.validation).circularityPct)));
         ValidationOptions farther = c.validation;
+        farther.circleFit = false;  // the fit finds the ring's outer border (and rejects its radius)
         farther.beyondEdgePx = 5.0;
         QVERIFY2(score(farther).circularityPct < 30, qPrintable(QString::number(score(farther).circularityPct)));
+    }
+
+    // Half the ball behind a masked rod: judged on its visible half (rays that run into the
+    // mask are left out); with masked_rays_unknown off those rays are misses and it fails.
+    void ballHalfBehindMaskedRod()
+    {
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 150, 30);
+        const int r = int(std::lround(expectedRadius(c, 150)));
+        // A rod 2r wide whose edge passes r/3 left of the centre hides ~40 % of the ball.
+        c.mask = cv::Mat(frame.size(), CV_8UC1, cv::Scalar(255));
+        cv::rectangle(c.mask, cv::Rect(p.x - r / 3 - 2 * r, 0, 2 * r, frame.rows), cv::Scalar(0), cv::FILLED);
+        cv::rectangle(frame, cv::Rect(p.x - r / 3 - 2 * r, 0, 2 * r, frame.rows), kBlack, cv::FILLED);
+        const BallCandidate on = validateFrame(c, frame, p);
+        QVERIFY2(on.rejected == RejectReason::None, qPrintable(verdict(on)));
+        c.validation.maskedRaysUnknown = false;
+        const BallCandidate off = validateFrame(c, frame, p);
+        QVERIFY2(off.rejected == RejectReason::Circularity, qPrintable(verdict(off)));
+    }
+
+    // A ball blurred by 7 px of motion, with sensor noise (sigma 6), drawn 2-3 px larger than the
+    // ball model expects (a model 2-3 px off on a real camera): the fitted circle passes it, the
+    // thesis' band around the expected radius does not.
+    void blurredNoisyBallOffModelPassesTheFit_data()
+    {
+        QTest::addColumn<double>("distance");
+        QTest::addColumn<int>("modelError");
+        QTest::newRow("1 m, 3 px larger") << 100.0 << 3;
+        QTest::newRow("2 m, 2 px larger") << 160.0 << 2;
+    }
+    void blurredNoisyBallOffModelPassesTheFit()
+    {
+        QFETCH(double, distance);
+        QFETCH(int, modelError);
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point2d q = pointAt(c, distance, 70);
+        const cv::Point p(int(std::lround(q.x)), int(std::lround(q.y)));
+        cv::circle(frame, p, int(std::lround(expectedRadius(c, distance))) + modelError, kOrange, cv::FILLED);
+        blurAndNoise(frame, 7, 6.0);
+        const BallCandidate fit = validateFrame(c, frame, p);
+        QVERIFY2(fit.rejected == RejectReason::None, qPrintable(verdict(fit)));
+        QVERIFY2(std::abs(fit.scores.fitRadiusPx - fit.expectedRadiusPx - modelError) < 1.5,
+                 qPrintable(QString::number(fit.scores.fitRadiusPx)));
+        c.validation.circleFit = false;
+        const BallCandidate band = validateFrame(c, frame, p);
+        QVERIFY2(band.rejected == RejectReason::Circularity, qPrintable(verdict(band)));
+    }
+
+    // What the wider fit must still reject: a straight edge and a corner of a non-black object
+    // (a robot's cover, a poster) and a disc twice the expected size.
+    void circleFitRejectsEdgesAndWrongSizes_data()
+    {
+        QTest::addColumn<int>("shape");
+        QTest::newRow("straight edge") << 0;
+        QTest::newRow("corner of a square") << 1;
+        QTest::newRow("disc of twice the radius") << 2;
+        QTest::newRow("disc of half the radius") << 3;
+    }
+    void circleFitRejectsEdgesAndWrongSizes()
+    {
+        QFETCH(int, shape);
+        const BallCandidate c = validateAt(120, 150, [shape](cv::Mat& f, const Config&, cv::Point p, double r) {
+            const int ri = int(std::lround(r));
+            const cv::Scalar cover(200, 120, 60);  // blue-grey, neither green nor black
+            switch (shape) {
+            case 0: cv::rectangle(f, cv::Rect(p.x - 60, p.y - ri / 2, 120, 80), cover, cv::FILLED); break;
+            case 1: cv::rectangle(f, cv::Rect(p.x - ri, p.y - ri, 80, 80), cover, cv::FILLED); break;
+            case 2: cv::circle(f, p, 2 * ri, kOrange, cv::FILLED); break;
+            case 3: cv::circle(f, p, ri / 2, kOrange, cv::FILLED); break;
+            }
+        });
+        QVERIFY2(c.rejected != RejectReason::None, qPrintable(verdict(c)));
+    }
+
+    // A green-and-white ball: its green panels are not the carpet's green. With carpet_by_colour
+    // they count as ball (non-green test) and their border with the carpet as its border; off,
+    // the ball is half "green" and fails the non-green test.
+    void greenPanelledBall()
+    {
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 130, 200, kWhite);
+        const int r = int(std::lround(expectedRadius(c, 130)));
+        // Green wedges over half the ball, reaching its border.
+        for (int k = 0; k < 4; ++k)
+            cv::ellipse(frame, p, cv::Size(r, r), 0, 90.0 * k, 90.0 * k + 45.0, kPanelGreen, cv::FILLED);
+        const BallCandidate on = validateFrame(c, frame, p);
+        QVERIFY2(on.rejected == RejectReason::None, qPrintable(verdict(on)));
+        QVERIFY2(on.scores.nonGreenPct > 95, qPrintable(verdict(on)));
+        c.validation.carpetByColour = false;
+        const BallCandidate off = validateFrame(c, frame, p);
+        QVERIFY2(off.rejected == RejectReason::NonGreen, qPrintable(verdict(off)));
+    }
+
+    // Green panels of the carpet's own hue and saturation, told apart only by brightness (the
+    // optics renderer's green-and-white ball): validation.carpet_value_tolerance judges it.
+    void darkGreenPanelsNeedTheValueTolerance()
+    {
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 130, 200, kWhite);
+        const int r = int(std::lround(expectedRadius(c, 130)));
+        for (int k = 0; k < 4; ++k)
+            cv::ellipse(frame, p, cv::Size(r, r), 0, 90.0 * k, 90.0 * k + 45.0, kGreen * 0.5, cv::FILLED);
+        QCOMPARE(validateFrame(c, frame, p).rejected, RejectReason::NonGreen);
+        c.validation.carpetTolerance.value = 30;
+        const BallCandidate on = validateFrame(c, frame, p);
+        QVERIFY2(on.rejected == RejectReason::None, qPrintable(verdict(on)));
+    }
+
+    // Carpet by colour still sees carpet as carpet: noisy, vignetted carpet with a green speck
+    // is rejected as before, and a disc of the carpet's own green (a lighter patch) is no ball.
+    void carpetByColourKeepsCarpetGreen()
+    {
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 140, 120, cv::Scalar(50, 165, 50));
+        blurAndNoise(frame, 1, 6.0);
+        const BallCandidate cand = validateFrame(c, frame, p);
+        QVERIFY2(cand.rejected == RejectReason::NonGreen, qPrintable(verdict(cand)));
+    }
+
+    // A known ball colour: an orange ball half of whose square reads as carpet-green (a panel
+    // of the carpet's own green) fails the non-green test, unless the team says it is orange.
+    void ballHintPassesTheColourTests()
+    {
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 130, 300);
+        const int r = int(std::lround(expectedRadius(c, 130)));
+        cv::ellipse(frame, p, cv::Size(r - 2, r - 2), 0, 0, 180, kGreen, cv::FILLED);
+        const BallCandidate none = validateFrame(c, frame, p);
+        QVERIFY2(none.rejected == RejectReason::NonGreen, qPrintable(verdict(none)));
+        c.validation.ballHint = ColorClass::Orange;
+        const BallCandidate orange = validateFrame(c, frame, p);
+        QVERIFY2(orange.rejected == RejectReason::None, qPrintable(verdict(orange)));
+        QVERIFY(orange.scores.hintPct >= c.validation.ballHintMinPct);
+        // A hint of another colour changes nothing.
+        c.validation.ballHint = ColorClass::Cyan;
+        QCOMPARE(validateFrame(c, frame, p).rejected, RejectReason::NonGreen);
+    }
+
+    // The real-frame false positives. A round white floor reflection: a soft-edged whitish disc
+    // of the ball's size on the carpet. A rod tip: the end of a support rod that sticks out of
+    // its mask, grey, with a rounded end.
+    void realFrameFalsePositives_data()
+    {
+        QTest::addColumn<int>("scene");
+        QTest::newRow("floor reflection") << 0;
+        QTest::newRow("rod tip") << 1;
+    }
+    void realFrameFalsePositives()
+    {
+        QFETCH(int, scene);
+        Config c;
+        cv::Mat frame = greenField(c);
+        const double distance = 140;
+        const cv::Point2d q = pointAt(c, distance, 250);
+        const cv::Point p(int(std::lround(q.x)), int(std::lround(q.y)));
+        const int r = int(std::lround(expectedRadius(c, distance)));
+        if (scene == 0) {
+            cv::Mat light(frame.size(), CV_8UC3, cv::Scalar(0, 0, 0));
+            cv::circle(light, p, r, cv::Scalar(190, 120, 190), cv::FILLED);
+            cv::GaussianBlur(light, light, cv::Size(0, 0), 2.5);
+            frame += light;
+        } else {
+            // The rod runs from the mirror rim inwards and ends at p; its mask stops r px short.
+            const cv::Scalar rod(110, 110, 110);
+            const cv::Point out = cv::Point(int(std::lround(pointAt(c, 260, 250).x)), int(std::lround(pointAt(c, 260, 250).y)));
+            cv::line(frame, p, out, rod, 2 * r);
+            cv::circle(frame, p, r, rod, cv::FILLED);
+            c.mask = cv::Mat(frame.size(), CV_8UC1, cv::Scalar(255));
+            const cv::Point2d dir = (cv::Point2d(out) - cv::Point2d(p)) / cv::norm(cv::Point2d(out) - cv::Point2d(p));
+            const cv::Point maskStart(int(std::lround(p.x + dir.x * r)), int(std::lround(p.y + dir.y * r)));
+            cv::line(c.mask, maskStart, out, cv::Scalar(0), 2 * r + 6);
+        }
+        blurAndNoise(frame, 1, 3.0);
+        const BallCandidate cand = validateFrame(c, frame, p);
+        qInfo().noquote() << verdict(cand);
+        // A rod as wide as the ball whose visible end is round is, on its visible half, a ball
+        // half behind the rod: shape and colour classes cannot tell them apart (the grey rod is
+        // "unknown" like a blue ball). What would: a mask drawn past the rod's end, or the ball
+        // colour hint required of partly masked candidates.
+        if (scene == 1) QEXPECT_FAIL("rod tip", "a ball-wide rod end is a half-hidden ball to every test", Continue);
+        QVERIFY2(cand.rejected != RejectReason::None, qPrintable(verdict(cand)));
     }
 
     void thresholdsAreTheConfigs()
