@@ -28,11 +28,11 @@ void makeBinary(const cv::Mat& classes, const Geometry& geometry, cv::Mat& binar
     fillBytes(binary, 255);
     const auto green = std::uint8_t(ColorClass::Green);
     const auto white = std::uint8_t(ColorClass::White);
-    const auto whiteOut = std::uint8_t(whiteLevel);
+    const auto whiteOut = std::uint8_t(whiteLevel & 0xF0);
     for (const RowSpan& s : geometry.spans()) {
         const std::uint8_t* in = classes.ptr<std::uint8_t>(s.y);
         std::uint8_t* out = binary.ptr<std::uint8_t>(s.y);
-        if (whiteLevel == 0) {
+        if (whiteOut == 0) {
             for (int x = s.x0; x < s.x1; ++x) out[x] = in[x] == green ? 255 : 0;
         } else {
             for (int x = s.x0; x < s.x1; ++x) out[x] = in[x] == green ? 255 : in[x] == white ? whiteOut : 0;

@@ -26,7 +26,8 @@ struct EdgeOptions {
     int cannyHigh = 180; // high threshold; edges start above it and grow above cannyLow
     // Level of white (line) pixels in the binary image; 0 is the thesis (white is non-green like
     // the ball). A level between 0 and 255 puts an edge between a ball and a line it touches.
-    // A multiple of 16 (checkConfig): the Hough's centre test reads binary bits as "not green".
+    // Used rounded down to a multiple of 16: the Hough's centre test reads the binary image's
+    // low bits as "not green" (weight & ~binary).
     int whiteLevel = 0;
     EdgeInput input = EdgeInput::Binary;
 };

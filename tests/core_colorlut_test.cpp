@@ -71,6 +71,7 @@ private slots:
     {
         ColorLutOptions o;
         o.bits = 8;
+        o.blackRelative = false;  // relative black depends on the frame (tested below)
         const ColorLut lut(o);
         cv::RNG rng(7);
         for (int i = 0; i < 20000; ++i) {
@@ -82,7 +83,8 @@ private slots:
     // The default (quantised) table agrees with the direct classification on every bin centre.
     void defaultTableAgreesOnBinCentres()
     {
-        const ColorLutOptions o;
+        ColorLutOptions o;
+        o.blackRelative = false;
         const ColorLut lut(o);
         const int step = 1 << (8 - o.bits);
         int checked = 0;
@@ -183,6 +185,7 @@ private slots:
         const cv::Rect robot(12, 12, 8, 8);
 
         ColorLutOptions thesis;
+        thesis.blackRelative = false;
         cv::Mat a(80, 80, CV_8UC1, cv::Scalar(0));
         SegmentStats stats;
         ColorLut(thesis).segment(frame, PixelFormat::Bgr8, geo.spans(), a, &stats);
