@@ -21,8 +21,8 @@ struct AutoColourOptions {
     double peakSharePct = 5.0; // the carpet's hue band: bins around the peak above this share of it
     int maxHueBand = 50;       // a hue band wider than this (OpenCV hue steps) is no carpet but many colours
     double tailPct = 1.0;      // percentile cut at each end of the carpet's H and S spread (noise, outliers)
-    double minSaturationShare = 0.4;  // green's S floor at least this x the carpet's median S
-    int hueMarginDeg = 3;      // green's hue box this much wider than the carpet's spread on each side
+    double minSaturationShare = 0.35;  // green's S floor at least this x the carpet's median S
+    int hueMarginDeg = 5;      // green's hue box this much wider than the carpet's spread on each side
     double minCarpetPct = 20.0;// the carpet must cover this share of the used pixels, else no result
     // Black up to this x the carpet's median V (the same ratio the relative black uses per frame).
     double blackVRatio = 0.45;
