@@ -5,6 +5,7 @@
 #include "app/CommandLine.h"
 #include "app/StderrProgress.h"
 #include "app/ToolConfig.h"
+#include "calib/colour/AutoColour.h"
 #include "calib/fit/BallModelFit.h"
 #include "calib/fit/BallSamplesCsv.h"
 #include "calib/fit/BodyFit.h"
@@ -19,6 +20,7 @@
 #include "calib/session/Session.h"
 #include "calib/session/SessionReader.h"
 #include "calib/source/FrameSourceFactory.h"
+#include "core/ConfigSchema.h"
 #include "core/ConfigWriter.h"
 #include "core/RegularFile.h"
 #include "core/RingCoverage.h"
@@ -33,11 +35,11 @@ using namespace omnitune;
 namespace {
 
 const std::vector<OptionSpec> kOptions = {
-    {"input", true, false, "PATH  session, video, image folder or glob ('dir/*.png'); rim and ball-model"},
+    {"input", true, false, "PATH  session, video, image folder or glob ('dir/*.png'); rim, colours and ball-model"},
     {"config", true, false, "FILE  the config to start from (default: the session's config.yml; rim and\n"
                             "                          distance-map with radius_px points fall back to the defaults)"},
     {"out", true, false, "FILE  where the updated config goes (an existing file is kept as FILE.bak)"},
-    {"frames", true, false, "N     rim and mask: frames used, spread over the input (default 8 for rim, 16 for mask)"},
+    {"frames", true, false, "N     rim, colours and mask: frames used, spread over the input (default 8; mask 16)"},
     {"margin", true, false, "PX    rim: outer radius this far inside the found rim (default 4)"},
     {"no-body", false, false, "      rim: keep the config's inner radius (fit the rim from one frame)"},
     {"points", true, false, "FILE  distance-map: CSV radius_px,distance_m or x,y,distance_m"},
@@ -56,6 +58,8 @@ const char* const kSummary =
     "Fits the camera geometry and writes it into a config.\n"
     "subcommands:\n"
     "  rim            mirror centre, outer radius (from the rim) and inner radius (from the robot body)\n"
+    "  colours        first colour calibration: the dominant hue in the used area is the carpet; green,\n"
+    "                 white and black set from it (run after rim: it needs the geometry)\n"
     "  distance-map   image radius -> ground distance from --points\n"
     "  ball-model     expected ball radius r(d) from the truth marks of the --input session or --samples\n"
     "  mask --auto    robot mask (body, support rods, reflections): what stays put while the field moves\n"
@@ -176,6 +180,57 @@ int runRim(const CommandLine& cl, const std::string& out)
         std::cerr << "note: the radial sensors run from " << fixedText(sensors.innerRadius) << " to "
                   << fixedText(sensors.outerRadius) << " px, outside the new ring; set sensors.inner_radius and "
                   << "outer_radius to match\n";
+    return save(*config, out);
+}
+
+std::string hsvText(const HsvRange& r)
+{
+    return "H " + std::to_string(r.hMin) + ".." + std::to_string(r.hMax) + "  S " + std::to_string(r.sMin) + ".." +
+           std::to_string(r.sMax) + "  V " + std::to_string(r.vMin) + ".." + std::to_string(r.vMax);
+}
+
+int runColours(const CommandLine& cl, const std::string& out)
+{
+    if (!cl.has("input")) return fail("colours needs --input (see --help)");
+    const std::string input = *cl.value("input");
+    int frameCount = 8;
+    if (auto f = cl.value("frames")) {
+        const auto v = parseInt(*f);
+        if (!v || *v < 1) return fail("--frames must be a positive whole number, not '" + *f + "'");
+        frameCount = *v;
+    }
+    auto opened = openFrameSource(input);
+    if (!opened.ok()) return fail(opened.error);
+    for (const auto& w : opened.warnings) std::cerr << "warning: " << w << "\n";
+    std::string error;
+    auto config = startingConfig(cl, false, "colours samples the used area of the config's geometry", error);
+    if (!config) return fail(error);
+    FitFrames frames = readFitFrames(*opened.source, frameCount);
+    for (const auto& w : frames.warnings) std::cerr << "warning: " << w << "\n";
+    if (!frames.ok()) return fail(frames.error->toString());
+    const cv::Size size = frames.images.front().size();
+    const cv::Size geometrySize(config->geometry.imageWidth, config->geometry.imageHeight);
+    if (size != geometrySize)
+        return fail("the config's geometry is for " + sizeText(geometrySize) + " frames but " + input + " gives " +
+                    sizeText(size) + " frames: run 'omnitune-calibrate rim' on it first");
+    const auto problems = checkConfig(*config);
+    if (!problems.empty()) return fail(problems.front().toString());
+
+    const Geometry geometry(config->geometry, config->mask);
+    const AutoColourResult r = autoColour(frames.images, geometry, config->colors);
+    if (!r.ok()) return fail(*r.error);
+    const auto range = [&](const ColorLutOptions& c, ColorClass k) { return hsvText(c.ranges[std::size_t(k)]); };
+    std::cout << "colours: " << frames.images.size() << " frame(s) of " << opened.source->description() << "\n"
+              << "  carpet   hue " << r.carpetHue << ", median S " << r.carpetS << ", median V " << r.carpetV << ", "
+              << fixedText(r.carpetPct, 1) << " % of the used area\n"
+              << "  green    " << range(r.colors, ColorClass::Green) << "  (was " << range(config->colors, ColorClass::Green)
+              << ")\n"
+              << "  white    " << range(r.colors, ColorClass::White) << "  (was " << range(config->colors, ColorClass::White)
+              << ")\n"
+              << "  black    V <= " << fixedText(r.colors.blackVRatio, 2) << " x the carpet's V per frame (black_relative; "
+              << range(r.colors, ColorClass::Black) << " when no carpet is seen)\n";
+    for (const auto& n : r.notes) std::cout << "  note: " << n << "\n";
+    config->colors = r.colors;
     return save(*config, out);
 }
 
@@ -382,14 +437,16 @@ int main(int argc, char** argv)
         std::cout << usageText("omnitune-calibrate SUBCOMMAND", kSummary, kOptions);
         return 0;
     }
-    if (subcommand != "rim" && subcommand != "distance-map" && subcommand != "ball-model" && subcommand != "mask")
+    if (subcommand != "rim" && subcommand != "colours" && subcommand != "distance-map" && subcommand != "ball-model" &&
+        subcommand != "mask")
         return fail((subcommand.empty() ? std::string("no subcommand") : "unknown subcommand '" + subcommand + "'") +
-                    ": rim, distance-map, ball-model or mask (see --help)");
+                    ": rim, colours, distance-map, ball-model or mask (see --help)");
     if (!cl.error.empty()) return fail(cl.error + " (see --help)");
     if (!cl.has("out")) return fail("--out OUT.yml is required (see --help)");
     const std::string out = *cl.value("out");
     try {
         if (subcommand == "rim") return runRim(cl, out);
+        if (subcommand == "colours") return runColours(cl, out);
         if (subcommand == "distance-map") return runDistanceMap(cl, out);
         if (subcommand == "mask") return runMask(cl, out);
         return runBallModel(cl, out);

@@ -310,8 +310,26 @@ void BM_HardPipeline(benchmark::State& state)
 
 }  // namespace
 
+// Segmentation with the thesis' fixed black (0) and with black relative to the carpet (1):
+// the cost of the per-frame carpet histogram and remap.
+void BM_SegmentRelativeBlack(benchmark::State& state)
+{
+    const auto& f = frames();
+    ColorLutOptions o = f.config.colors;
+    o.blackRelative = state.range(0) != 0;
+    const ColorLut lut(o);
+    cv::Mat out(f.bgr[0].size(), CV_8UC1, cv::Scalar(0));
+    std::size_t i = 0;
+    for (auto _ : state) {
+        lut.segment(f.bgr[i++ % f.bgr.size()], PixelFormat::Bgr8, f.geometry.spans(), out);
+        benchmark::ClobberMemory();
+    }
+    setFrames(state);
+}
+
 BENCHMARK(BM_CvHoughCircles)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Segment)->DenseRange(4, 8)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SegmentRelativeBlack)->DenseRange(0, 1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Binary)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Canny)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CvCanny)->Unit(benchmark::kMillisecond);

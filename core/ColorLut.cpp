@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace omnitune {
@@ -83,18 +84,47 @@ void ColorLut::compile(const ColorLutOptions& options)
     cv::Mat yuvHsv;
     cv::cvtColor(bgrGrid, bgrHsv, cv::COLOR_BGR2HSV);
     cv::cvtColor(yuvGrid, yuvHsv, cv::COLOR_BGR2HSV);
+    // Relative black: the table holds the class without black and without green's V floor,
+    // with the V band beside it; segment() decides black per frame.
+    relative_ = options.blackRelative;
+    blackVRatio_ = options.blackVRatio;
+    const HsvRange& black = options.ranges[std::size_t(ColorClass::Black)];
+    fallbackBlackV_ = black.enabled ? black.vMax : -1;
+    auto ranges = options.ranges;
+    if (relative_) {
+        ranges[std::size_t(ColorClass::Black)].enabled = false;
+        ranges[std::size_t(ColorClass::Green)].vMin = 0;
+    }
+    auto entry = [&](const cv::Vec3b& hsv) {
+        const auto cls = std::uint8_t(classifyHsv(ranges, hsv[0], hsv[1], hsv[2]));
+        return relative_ ? std::uint8_t((cls << kBandBits) | (hsv[2] >> 3)) : cls;
+    };
     bgrTable_.assign(std::size_t(entries), 0);
     yuvTable_.assign(std::size_t(entries), 0);
     for (int i = 0; i < entries; ++i) {
-        const auto& p = bgrHsv.at<cv::Vec3b>(0, i);
-        const auto& q = yuvHsv.at<cv::Vec3b>(0, i);
-        bgrTable_[std::size_t(i)] = std::uint8_t(classifyHsv(options.ranges, p[0], p[1], p[2]));
-        yuvTable_[std::size_t(i)] = std::uint8_t(classifyHsv(options.ranges, q[0], q[1], q[2]));
+        bgrTable_[std::size_t(i)] = entry(bgrHsv.at<cv::Vec3b>(0, i));
+        yuvTable_[std::size_t(i)] = entry(yuvHsv.at<cv::Vec3b>(0, i));
+    }
+    if (relative_) {
+        fixedRemap_ = remapFor(fallbackBlackV_);
+    } else {
+        for (int b = 0; b < 256; ++b) fixedRemap_[std::size_t(b)] = std::uint8_t(b);
     }
 }
 
+std::array<std::uint8_t, 256> ColorLut::remapFor(int blackV) const
+{
+    std::array<std::uint8_t, 256> remap{};
+    for (int b = 0; b < 256; ++b) {
+        const int cls = b >> kBandBits;
+        const int bandCentre = ((b & ((1 << kBandBits) - 1)) << 3) + 4;
+        remap[std::size_t(b)] = bandCentre <= blackV ? std::uint8_t(ColorClass::Black) : std::uint8_t(cls);
+    }
+    return remap;
+}
+
 void ColorLut::segment(const cv::Mat& frame, PixelFormat format, const std::vector<RowSpan>& spans,
-                       cv::Mat& classes) const
+                       cv::Mat& classes, SegmentStats* stats) const
 {
     CV_Assert(!empty());
     CV_Assert(classes.type() == CV_8UC1 && classes.size() == frame.size());
@@ -106,19 +136,51 @@ void ColorLut::segment(const cv::Mat& frame, PixelFormat format, const std::vect
             for (int x = s.x0; x < s.x1; ++x, in += 3)
                 out[x] = bgrTable_[index(in[0], in[1], in[2])];
         }
-        return;
-    }
-    CV_Assert(frame.type() == CV_8UC2);
-    for (const RowSpan& s : spans) {
-        const std::uint8_t* row = frame.ptr<std::uint8_t>(s.y);
-        std::uint8_t* out = classes.ptr<std::uint8_t>(s.y);
-        for (int x = s.x0; x < s.x1; ++x) {
-            // Pixel pair (x & ~1, x | 1) shares U and V: U0 Y0 V0 Y1.
-            const std::uint8_t* pair = row + 2 * (x & ~1);
-            const std::uint8_t y = (x & 1) ? pair[3] : pair[1];
-            out[x] = yuvTable_[index(y, pair[0], pair[2])];
+    } else {
+        CV_Assert(frame.type() == CV_8UC2);
+        for (const RowSpan& s : spans) {
+            const std::uint8_t* row = frame.ptr<std::uint8_t>(s.y);
+            std::uint8_t* out = classes.ptr<std::uint8_t>(s.y);
+            for (int x = s.x0; x < s.x1; ++x) {
+                // Pixel pair (x & ~1, x | 1) shares U and V: U0 Y0 V0 Y1.
+                const std::uint8_t* pair = row + 2 * (x & ~1);
+                const std::uint8_t y = (x & 1) ? pair[3] : pair[1];
+                out[x] = yuvTable_[index(y, pair[0], pair[2])];
+            }
         }
     }
+    if (stats) *stats = SegmentStats{};
+    if (!relative_) return;
+
+    // The carpet's V: median V band of the green pixels on every 4th row, every 2nd column
+    // (~1/8 of the ring: enough for a median, cheap next to the table reads).
+    std::array<int, 1 << kBandBits> bands{};
+    const int greenCode = int(ColorClass::Green);
+    for (const RowSpan& s : spans) {
+        if (s.y & 3) continue;
+        const std::uint8_t* row = classes.ptr<std::uint8_t>(s.y);
+        for (int x = s.x0; x < s.x1; x += 2)
+            if ((row[x] >> kBandBits) == greenCode) ++bands[std::size_t(row[x] & ((1 << kBandBits) - 1))];
+    }
+    int total = 0;
+    for (int n : bands) total += n;
+    int carpetV = -1;
+    int blackV = fallbackBlackV_;
+    // Too few carpet pixels to say how bright it is (a frame of robots, a covered lens).
+    constexpr int kMinCarpetSamples = 32;
+    if (total >= kMinCarpetSamples && fallbackBlackV_ >= 0) {
+        int seen = 0;
+        int band = 0;
+        while (band < int(bands.size()) - 1 && (seen += bands[std::size_t(band)]) * 2 < total) ++band;
+        carpetV = (band << 3) + 4;
+        blackV = int(std::lround(blackVRatio_ * carpetV));
+    }
+    const std::array<std::uint8_t, 256> remap = remapFor(blackV);
+    for (const RowSpan& s : spans) {
+        std::uint8_t* out = classes.ptr<std::uint8_t>(s.y);
+        for (int x = s.x0; x < s.x1; ++x) out[x] = remap[out[x]];
+    }
+    if (stats) *stats = SegmentStats{carpetV, blackV};
 }
 
 }  // namespace omnitune

@@ -80,6 +80,16 @@ std::vector<ConfigKey> buildSchema()
     s.push_back(intKey("colors.lut_bits", "bits", 4, 8, false,
                        "LUT index bits per channel: the table has 2^(3*bits) entries; more bits leave the L2 cache (see docs/performance.md), fewer coarsen class borders",
                        [](auto& c) -> auto& { return c.colors.bits; }));
+    s.push_back(boolKey("colors.black_relative", false,
+                        "Black relative to each frame's carpet: black is what is darker than black_v_ratio x the carpet's median V, "
+                        "whatever its hue, and green has no V floor (black.v_min/v_max and green.v_min unused; black.v_max "
+                        "only when a frame shows no carpet). Off: thesis, black is its fixed HSV box, which in dim "
+                        "light turns the carpet into black speckle (simulated dim tours: 0-2 % of balls found, 82-90 % with it on)",
+                        [](auto& c) -> auto& { return c.colors.blackRelative; }));
+    s.push_back(doubleKey("colors.black_v_ratio", "ratio", 0.05, 0.95, false,
+                          "With black_relative: black is V <= this x the carpet's median V (measured per frame on 1/8 of the "
+                          "ring's pixels); higher takes in shadows and dark carpet, lower leaves dim robots non-black",
+                          [](auto& c) -> auto& { return c.colors.blackVRatio; }));
     for (ColorClass cls : kClassificationOrder) {
         const std::string p = "colors." + std::string(colorClassKey(cls)) + ".";
         const std::size_t i = std::size_t(cls);
@@ -150,15 +160,36 @@ std::vector<ConfigKey> buildSchema()
                           [](auto& c) -> auto& { return c.ball.squareRatio; }));
 
     // edges
-    s.push_back(intKey("edges.canny_low", "gradient", 0, 1020, true, "Canny low threshold on the L1 gradient |dx|+|dy|: edges grow along pixels above it. Barely matters: on the "
+    s.push_back(intKey("edges.canny_low", "gradient", 0, 1020, true, "Canny low threshold on the L1 gradient |dx|+|dy|: edges grow along pixels above it. On the "
                        "green / non-green image (levels 0 and 255) every gradient is a multiple of 510, so any value below 510 "
-                       "gives the same edges; up to 1019 only rings around one-pixel specks drop out, from 1020 borders break apart",
+                       "gives the same edges; up to 1019 only rings around one-pixel specks drop out, from 1020 borders break apart. "
+                       "With white_level the smallest step is min(white_level, 255 - white_level): keep both thresholds below "
+                       "2 x that (below 254 at level 128). With input: gray it is an ordinary Canny threshold on the frame's "
+                       "grayscale (a step of d grey levels gives about 4 x d)",
                        [](auto& c) -> auto& { return c.edges.cannyLow; }));
-    s.push_back(intKey("edges.canny_high", "gradient", 0, 1020, true, "Canny high threshold on the L1 gradient |dx|+|dy|: edges start above it. Barely matters: on the "
+    s.push_back(intKey("edges.canny_high", "gradient", 0, 1020, true, "Canny high threshold on the L1 gradient |dx|+|dy|: edges start above it. On the "
                        "green / non-green image (levels 0 and 255) every gradient is a multiple of 510, so any value below 510 "
                        "gives the same edges; up to 1019 only rings around one-pixel specks drop out; from 1020 edges start only "
-                       "at steps and corners (straight borders vanish), from 1530 none",
+                       "at steps and corners (straight borders vanish), from 1530 none. With white_level the smallest step is "
+                       "min(white_level, 255 - white_level): keep it below 2 x that. With input: gray an ordinary Canny "
+                       "threshold (a step of d grey levels gives about 4 x d)",
                        [](auto& c) -> auto& { return c.edges.cannyHigh; }));
+    s.push_back(intKey("edges.white_level", "0..255", 0, 240, false,
+                       "Level of white (line) pixels in the binary image, used rounded down to a multiple of 16 (the Hough reads the "
+                       "binary image's low bits as \"not green\"); 0: thesis, white is non-green like "
+                       "the ball, so a ball touching a line merges with it into one blob. 128: an edge also runs between the "
+                       "ball and the line",
+                       [](auto& c) -> auto& { return c.edges.whiteLevel; }));
+    ConfigKey edgeInput{"edges.input", ValueType::Choice, "", 0, 0,
+                        "What Canny (and cv::HoughCircles) run on: binary, the green / non-green image (thesis ch. 4); gray, "
+                        "the frame's own grayscale without colour segmentation (thesis solutions 2 and 4; the colour classes "
+                        "still serve validation)",
+                        {"binary", "gray"}, true, {}, {}};
+    edgeInput.get = [](const Config& c) { return ConfigValue(std::string(edgeInputName(c.edges.input))); };
+    edgeInput.set = [](Config& c, const ConfigValue& v) {
+        if (auto e = parseEdgeInput(std::get<std::string>(v))) c.edges.input = *e;
+    };
+    s.push_back(std::move(edgeInput));
 
     // specific Hough
     s.push_back(doubleKey("hough.near_robot_radius", "px", 0, 2048, true, "Votes for centres closer than this count near_robot_weight times (the ball there is half hidden)",
@@ -469,7 +500,7 @@ std::string configSchemaMarkdown()
         {"distance_map", "Image distance (px) to ground distance (m), monotone cubic through the calibration points; "
                          "the ball position is scaled by (viewpoint_height - ball_radius) / viewpoint_height."},
         {"ball", "Expected ball radius in the image by distance to the centre (thesis Fig. 4.7), and the validation square."},
-        {"edges", "Canny on the green / non-green image (thesis 4, Fig. 4.6)."},
+        {"edges", "Canny on the green / non-green image (thesis 4, Fig. 4.6), or on the frame's grayscale."},
         {"hough", "Specific circular Hough transform (thesis 4.1)."},
         {"opencv_hough", "cv::HoughCircles with HOUGH_GRADIENT (thesis 4.2)."},
         {"validation", "Candidate validation (thesis 4.4): the three tests and our rules must all pass."},

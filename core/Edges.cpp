@@ -9,16 +9,57 @@
 
 namespace omnitune {
 
-void makeBinary(const cv::Mat& classes, const Geometry& geometry, cv::Mat& binary)
+std::string_view edgeInputName(EdgeInput input)
+{
+    return input == EdgeInput::Gray ? "gray" : "binary";
+}
+
+std::optional<EdgeInput> parseEdgeInput(std::string_view name)
+{
+    if (name == "binary") return EdgeInput::Binary;
+    if (name == "gray") return EdgeInput::Gray;
+    return std::nullopt;
+}
+
+void makeBinary(const cv::Mat& classes, const Geometry& geometry, cv::Mat& binary, int whiteLevel)
 {
     CV_Assert(classes.type() == CV_8UC1);
     binary.create(classes.size(), CV_8UC1);
     fillBytes(binary, 255);
     const auto green = std::uint8_t(ColorClass::Green);
+    const auto white = std::uint8_t(ColorClass::White);
+    const auto whiteOut = std::uint8_t(whiteLevel & 0xF0);
     for (const RowSpan& s : geometry.spans()) {
         const std::uint8_t* in = classes.ptr<std::uint8_t>(s.y);
         std::uint8_t* out = binary.ptr<std::uint8_t>(s.y);
-        for (int x = s.x0; x < s.x1; ++x) out[x] = in[x] == green ? 255 : 0;
+        if (whiteOut == 0) {
+            for (int x = s.x0; x < s.x1; ++x) out[x] = in[x] == green ? 255 : 0;
+        } else {
+            for (int x = s.x0; x < s.x1; ++x) out[x] = in[x] == green ? 255 : in[x] == white ? whiteOut : 0;
+        }
+    }
+}
+
+void makeGray(const cv::Mat& frame, bool uyvy, cv::Mat& gray)
+{
+    gray.create(frame.size(), CV_8UC1);
+    if (!uyvy) {
+        CV_Assert(frame.type() == CV_8UC3);
+        // BT.601 luma in 8-bit fixed point (weights sum to 256), as cvtColor would, without its
+        // per-call allocation.
+        for (int y = 0; y < frame.rows; ++y) {
+            const std::uint8_t* in = frame.ptr<std::uint8_t>(y);
+            std::uint8_t* out = gray.ptr<std::uint8_t>(y);
+            for (int x = 0; x < frame.cols; ++x, in += 3)
+                out[x] = std::uint8_t((29 * in[0] + 150 * in[1] + 77 * in[2] + 128) >> 8);
+        }
+        return;
+    }
+    CV_Assert(frame.type() == CV_8UC2);
+    for (int y = 0; y < frame.rows; ++y) {
+        const std::uint8_t* in = frame.ptr<std::uint8_t>(y);
+        std::uint8_t* out = gray.ptr<std::uint8_t>(y);
+        for (int x = 0; x < frame.cols; ++x) out[x] = in[2 * x + 1];  // U Y V Y: Y at odd bytes
     }
 }
 

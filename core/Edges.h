@@ -1,23 +1,43 @@
 #pragma once
 // The edge stage: segmented classes -> binary image (green and unprocessed pixels white,
-// everything else black; thesis "Grayscale Image") -> Canny edges ("Edges Image").
+// everything else black; thesis "Grayscale Image") -> Canny edges ("Edges Image"). Or, the
+// thesis' solutions 2 and 4, Canny on the grayscale of the camera frame itself.
 #include <opencv2/core.hpp>
 
 #include <cstdint>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 namespace omnitune {
 
 class Geometry;
 
+// What Canny (and cv::HoughCircles) see.
+enum class EdgeInput {
+    Binary,  // the green / non-green image made from the colour classes (thesis ch. 4)
+    Gray,    // the frame's own grayscale, no colour segmentation (thesis solutions 2 and 4)
+};
+std::string_view edgeInputName(EdgeInput input);
+std::optional<EdgeInput> parseEdgeInput(std::string_view name);
+
 struct EdgeOptions {
     int cannyLow = 60;   // hysteresis low threshold on |dx|+|dy| of a 3x3 Sobel; 0..1020
     int cannyHigh = 180; // high threshold; edges start above it and grow above cannyLow
+    // Level of white (line) pixels in the binary image; 0 is the thesis (white is non-green like
+    // the ball). A level between 0 and 255 puts an edge between a ball and a line it touches.
+    // Used rounded down to a multiple of 16: the Hough's centre test reads the binary image's
+    // low bits as "not green" (weight & ~binary).
+    int whiteLevel = 0;
+    EdgeInput input = EdgeInput::Binary;
 };
 
-// Green -> 255, other classes -> 0, pixels the geometry does not use -> 255 so that the robot
-// body and the mirror rim make no edges.
-void makeBinary(const cv::Mat& classes, const Geometry& geometry, cv::Mat& binary);
+// Green -> 255, white -> whiteLevel, other classes -> 0, pixels the geometry does not use -> 255
+// so that the robot body and the mirror rim make no edges.
+void makeBinary(const cv::Mat& classes, const Geometry& geometry, cv::Mat& binary, int whiteLevel = 0);
+
+// The luminance of a BGR or UYVY frame (CV_8UC1), for EdgeInput::Gray; `gray` is reused.
+void makeGray(const cv::Mat& frame, bool uyvy, cv::Mat& gray);
 
 // Canny edge detector (3x3 Sobel, L1 magnitude, replicated border, OpenCV's direction
 // quantisation). Written here instead of calling cv::Canny so that it keeps its scratch

@@ -20,11 +20,12 @@ void FrontEnd::process(const cv::Mat& frame, PixelFormat format, cv::Mat& classe
     Stopwatch clock;
     classes.create(geometry_.imageSize(), CV_8UC1);
     fillBytes(classes, 0);
-    lut_.segment(frame, format, geometry_.spans(), classes);
+    lut_.segment(frame, format, geometry_.spans(), classes, &stats_);
     const double segmentMs = clock.lap();
-    makeBinary(classes, geometry_, binary);
+    makeBinary(classes, geometry_, binary, edgeOptions_.whiteLevel);
+    if (edgeOptions_.input == EdgeInput::Gray) makeGray(frame, format == PixelFormat::Uyvy, gray_);
     const double binaryMs = clock.lap();
-    canny_.detect(binary, edgeOptions_, edges);
+    canny_.detect(edgeSource(binary), edgeOptions_, edges);
     cv::bitwise_and(edges, geometry_.edgeMask(), edges);
     const double edgesMs = clock.lap();
     if (timings) {

@@ -146,7 +146,7 @@ struct Pipeline::Impl {
     void searchOpenCv(PipelineResult& r, Stopwatch& clock)
     {
         const std::size_t first = r.candidates.size();
-        opencvHough.process(binary, config.opencvHough, geometry(), ball, r.candidates);
+        opencvHough.process(frontEnd.edgeSource(binary), config.opencvHough, geometry(), ball, r.candidates);
         r.timings.houghMs += clock.lap();
         validateFrom(first, r);
         r.timings.validationMs += clock.lap();
@@ -168,7 +168,7 @@ struct Pipeline::Impl {
         else
             convertUyvyToBgr(frame, s.acquired);
         paintSegmented(r.classes, geometry().usedMask(), s.segmented);
-        binary.copyTo(s.grayscale);
+        frontEnd.edgeSource(binary).copyTo(s.grayscale);
         edges.copyTo(s.edges);
         paintVotes(hough.sums(), s.hough);
     }

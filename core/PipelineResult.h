@@ -34,7 +34,7 @@ struct StageTimings {
 struct StageImages {
     cv::Mat acquired;   // BGR
     cv::Mat segmented;  // BGR false colour of the classes
-    cv::Mat grayscale;  // binary: green/unprocessed 255, other 0
+    cv::Mat grayscale;  // what Canny saw: binary (green/unprocessed 255, white edges.white_level, other 0) or the gray frame
     cv::Mat edges;      // 0/255
     cv::Mat hough;      // BGR heat map of the 3x3 vote sums
 };

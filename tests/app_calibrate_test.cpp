@@ -237,6 +237,35 @@ private slots:
         QVERIFY(!QFileInfo::exists(out + ".bak"));
     }
 
+    // colours on a frame with a cyan-green carpet (outside the default green box): the config
+    // it writes loads and its green holds the carpet's hue.
+    void coloursWritesAConfigThatLoads()
+    {
+        QTemporaryDir dir;
+        const QString frame = dir.filePath("cyan_green.png");
+        cv::Mat img(480, 640, CV_8UC3, cv::Scalar(150, 160, 30));  // hue 88
+        img(cv::Rect(150, 100, 300, 8)).setTo(cv::Scalar(235, 235, 235));  // a line
+        QVERIFY(cv::imwrite(frame.toStdString(), img));
+        const QString out = dir.filePath("out.yml");
+        const Run r = calibrate({"colours", "--input", frame, "--config", kDemo + "/config.yml", "--out", out});
+        QVERIFY2(r.cleanExit && r.exitCode == 0, qPrintable(r.describe()));
+        for (const char* word : {"carpet   hue 88", "green", "white", "black", "wrote"})
+            QVERIFY2(r.out.contains(word), qPrintable(r.describe()));
+        const omnitune::ConfigLoad load = omnitune::loadConfig(out.toStdString());
+        QVERIFY(load.ok());
+        const auto& green = load.config.colors.ranges[std::size_t(omnitune::ColorClass::Green)];
+        QVERIFY2(green.containsHue(88) && green.hMin > 70, qPrintable(r.out));
+        QVERIFY(load.config.colors.blackRelative);
+        QCOMPARE(load.config.geometry.imageWidth, 640);  // the rest kept
+
+        // Without a config there is no geometry to sample: refused, nothing written.
+        const QString none = dir.filePath("none.yml");
+        const Run refused = calibrate({"colours", "--input", frame, "--out", none});
+        QVERIFY2(refused.cleanExit && refused.exitCode == 1, qPrintable(refused.describe()));
+        QVERIFY2(refused.err.contains("--config"), qPrintable(refused.describe()));
+        QVERIFY(!QFileInfo::exists(none));
+    }
+
     void rimFromOneFrameNeedsNoBody()
     {
         QTemporaryDir dir;

@@ -71,6 +71,7 @@ private slots:
     {
         ColorLutOptions o;
         o.bits = 8;
+        o.blackRelative = false;  // relative black depends on the frame (tested below)
         const ColorLut lut(o);
         cv::RNG rng(7);
         for (int i = 0; i < 20000; ++i) {
@@ -82,7 +83,8 @@ private slots:
     // The default (quantised) table agrees with the direct classification on every bin centre.
     void defaultTableAgreesOnBinCentres()
     {
-        const ColorLutOptions o;
+        ColorLutOptions o;
+        o.blackRelative = false;
         const ColorLut lut(o);
         const int step = 1 << (8 - o.bits);
         int checked = 0;
@@ -156,6 +158,94 @@ private slots:
         QCOMPARE(int(classes.at<uchar>(24, 32)), int(ColorClass::Unknown));     // robot centre
         QCOMPARE(int(classes.at<uchar>(0, 0)), int(ColorClass::Unknown));       // outside mirror
         QCOMPARE(cv::countNonZero(classes), int(geo.usedPixels().size()));
+    }
+
+    // A dim carpet (V ~ 45) with noise: the thesis' fixed black (V <= 60) takes it all as black;
+    // relative black keeps it green and still finds a robot that is dark next to it.
+    void dimCarpetStaysGreenWithRelativeBlack()
+    {
+        GeometryOptions g;
+        g.imageWidth = 80;
+        g.imageHeight = 80;
+        g.centerX = 40;
+        g.centerY = 40;
+        g.innerRadius = 0;
+        g.outerRadius = 200;
+        const Geometry geo(g, cv::Mat());
+        cv::Mat frame(80, 80, CV_8UC3, cv::Scalar(11, 42, 13));  // dim carpet, hue ~61, V ~45
+        cv::Mat noise(80, 80, CV_8UC3);
+        cv::RNG rng(7);
+        rng.fill(noise, cv::RNG::UNIFORM, 0, 7);
+        cv::add(frame, noise, frame);
+        cv::rectangle(frame, cv::Rect(10, 10, 12, 12), cv::Scalar(4, 5, 4), cv::FILLED);  // robot, V ~5
+        auto share = [&](const cv::Mat& classes, ColorClass c, cv::Rect r) {
+            return double(cv::countNonZero(classes(r) == int(c))) / r.area();
+        };
+        const cv::Rect carpet(40, 40, 30, 30);
+        const cv::Rect robot(12, 12, 8, 8);
+
+        ColorLutOptions thesis;
+        thesis.blackRelative = false;
+        cv::Mat a(80, 80, CV_8UC1, cv::Scalar(0));
+        SegmentStats stats;
+        ColorLut(thesis).segment(frame, PixelFormat::Bgr8, geo.spans(), a, &stats);
+        QVERIFY(share(a, ColorClass::Black, carpet) > 0.99);
+        QCOMPARE(stats.carpetV, -1);
+
+        ColorLutOptions relative;
+        relative.blackRelative = true;
+        const ColorLut lut(relative);
+        cv::Mat b(80, 80, CV_8UC1, cv::Scalar(0));
+        lut.segment(frame, PixelFormat::Bgr8, geo.spans(), b, &stats);
+        QVERIFY(share(b, ColorClass::Green, carpet) > 0.99);
+        QCOMPARE(share(b, ColorClass::Black, robot), 1.0);
+        QVERIFY(std::abs(stats.carpetV - 45) <= 8);
+        QCOMPARE(stats.blackV, int(std::lround(relative.blackVRatio * stats.carpetV)));
+
+        // The same frame in bright light: black's threshold follows the carpet up.
+        cv::Mat bright;
+        frame.convertTo(bright, -1, 3.0);
+        lut.segment(bright, PixelFormat::Bgr8, geo.spans(), b, &stats);
+        QVERIFY(stats.carpetV > 120);
+        QVERIFY(share(b, ColorClass::Green, carpet) > 0.99);
+        QCOMPARE(share(b, ColorClass::Black, robot), 1.0);
+        // Without a carpet in view, black falls back to the fixed v_max.
+        const cv::Mat grey(80, 80, CV_8UC3, cv::Scalar(50, 50, 50));
+        lut.segment(grey, PixelFormat::Bgr8, geo.spans(), b, &stats);
+        QCOMPARE(stats.carpetV, -1);
+        QCOMPARE(stats.blackV, 60);
+        QCOMPARE(share(b, ColorClass::Black, carpet), 1.0);
+        // One colour alone is classified as without a carpet: black up to v_max.
+        QCOMPARE(lut.classifyBgr(14, 45, 16), ColorClass::Black);
+        QCOMPARE(lut.classifyBgr(30, 80, 25), ColorClass::Green);
+    }
+
+    // Pixels outside the ring and masked pixels (rods, robot body) stay Unknown, so validation
+    // can treat them as unknown.
+    void maskedPixelsStayUnknown()
+    {
+        GeometryOptions g;
+        g.imageWidth = 64;
+        g.imageHeight = 48;
+        g.centerX = 32;
+        g.centerY = 24;
+        g.innerRadius = 5;
+        g.outerRadius = 20;
+        cv::Mat mask(48, 64, CV_8UC1, cv::Scalar(255));
+        cv::rectangle(mask, cv::Rect(40, 20, 6, 8), cv::Scalar(0), cv::FILLED);  // a rod
+        const Geometry geo(g, mask);
+        for (bool relative : {false, true}) {
+            ColorLutOptions o;
+            o.blackRelative = relative;
+            const cv::Mat frame(48, 64, CV_8UC3, cv::Scalar(20, 20, 20));  // black everywhere
+            cv::Mat classes(48, 64, CV_8UC1, cv::Scalar(0));
+            ColorLut(o).segment(frame, PixelFormat::Bgr8, geo.spans(), classes);
+            QCOMPARE(int(classes.at<uchar>(24, 42)), int(ColorClass::Unknown));  // masked
+            QCOMPARE(int(classes.at<uchar>(0, 0)), int(ColorClass::Unknown));    // outside the mirror
+            QCOMPARE(int(classes.at<uchar>(24, 32)), int(ColorClass::Unknown));  // robot centre
+            QCOMPARE(int(classes.at<uchar>(24, 20)), int(ColorClass::Black));    // processed
+            QCOMPARE(cv::countNonZero(classes), int(geo.usedPixels().size()));
+        }
     }
 
     // A UYVY frame made from BGR colours segments like the BGR frame.

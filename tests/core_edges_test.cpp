@@ -1,5 +1,6 @@
 // The binary (green / non-green) image and the Canny edge detector.
 #include "DrawnScene.h"
+#include "core/ConfigSchema.h"
 
 #include <QtTest>
 
@@ -21,6 +22,59 @@ private slots:
         QCOMPARE(int(s.binary.at<uchar>(pointAt(c, 150, 100))), 255);      // carpet
         QCOMPARE(int(s.binary.at<uchar>(int(c.geometry.centerY), int(c.geometry.centerX))), 255);  // robot: unused
         QCOMPARE(int(s.binary.at<uchar>(0, 0)), 255);                      // outside the mirror
+    }
+
+    // A ball touching a line: with the thesis' binary image they are one non-green blob and no
+    // edge runs between them; with white at its own level an edge does.
+    void whiteLevelPutsAnEdgeBetweenBallAndLine()
+    {
+        Config c;
+        cv::Mat frame = greenField(c);
+        const double r = expectedRadius(c, 150);
+        const cv::Point ball = drawBall(frame, c, 150, 0);
+        // A vertical line whose left side touches the ball's right side.
+        const int lineX = ball.x + int(std::lround(r)) + 3;
+        cv::rectangle(frame, cv::Point(lineX - 3, ball.y - 40), cv::Point(lineX + 3, ball.y + 40), kWhite, cv::FILLED);
+        const cv::Rect between(lineX - 4, ball.y - 2, 2, 5);  // the ball/line border around the ball's right end
+        {
+            const EdgeStages s(c, frame);
+            QCOMPARE(int(s.binary.at<uchar>(ball.y, lineX)), 0);
+            QCOMPARE(cv::countNonZero(s.edges(between)), 0);
+            QCOMPARE(s.frontEnd.edgeSource(s.binary).data, s.binary.data);
+        }
+        c.edges.whiteLevel = 128;
+        QVERIFY(checkConfig(c).empty());
+        const EdgeStages s(c, frame);
+        QCOMPARE(int(s.binary.at<uchar>(ball.y, lineX)), 128);
+        QCOMPARE(int(s.binary.at<uchar>(ball)), 0);
+        QVERIFY(cv::countNonZero(s.edges(between)) > 0);
+        // The line's other side, against the carpet, keeps its edge.
+        QVERIFY(cv::countNonZero(s.edges(cv::Rect(lineX + 2, ball.y - 2, 3, 5))) > 0);
+        // Other levels are rounded down to a multiple of 16, which keeps the Hough's centre test.
+        c.edges.whiteLevel = 100;
+        QCOMPARE(int(EdgeStages(c, frame).binary.at<uchar>(ball.y, lineX)), 96);
+    }
+
+    // edges.input: gray finds the ball on a frame whose colours match no class (no segmentation).
+    void grayInputGivesEdgesWithoutSegmentation()
+    {
+        Config c;
+        cv::Mat frame(c.geometry.imageHeight, c.geometry.imageWidth, CV_8UC3, cv::Scalar(90, 90, 90));  // grey floor
+        const cv::Point ball = drawBall(frame, c, 150, 60, cv::Scalar(200, 200, 200));  // light grey ball
+        const double r = expectedRadius(c, 150);
+        const cv::Rect rim(ball.x - int(r) - 2, ball.y - int(r) - 2, 2 * int(r) + 5, 2 * int(r) + 5);
+        {
+            const EdgeStages s(c, frame);  // binary: no green anywhere, no edge at the ball
+            QCOMPARE(cv::countNonZero(s.edges(rim)), 0);
+        }
+        c.edges.input = EdgeInput::Gray;
+        const EdgeStages s(c, frame);
+        QVERIFY(cv::countNonZero(s.edges(rim)) > 4 * r);  // roughly the circumference
+        const cv::Mat& gray = s.frontEnd.edgeSource(s.binary);
+        QVERIFY(gray.data != s.binary.data);
+        QVERIFY(std::abs(int(gray.at<uchar>(ball)) - 200) <= 1);
+        QVERIFY(std::abs(int(gray.at<uchar>(pointAt(c, 100, 200))) - 90) <= 1);
+        QCOMPARE(cv::countNonZero(s.edges & ~s.geometry.edgeMask()), 0);  // still only inside the ring
     }
 
     // Our allocation-free Canny must give exactly OpenCV's result (3x3 Sobel, L1 norm).
