@@ -17,9 +17,10 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
     cv::HoughCircles(binary, circles_, cv::HOUGH_GRADIENT, options.dp, options.minDist, options.cannyHigh,
                      options.accThreshold, options.minRadius, options.maxRadius);
     // OpenCV returns the circles strongest first.
-    const int n = std::min<int>(int(circles_.size()), options.maxCircles);
-    for (int i = 0; i < n; ++i) {
-        const cv::Vec3f& c = circles_[std::size_t(i)];
+    int plausible = 0;
+    int implausible = 0;
+    for (const cv::Vec3f& c : circles_) {
+        if (plausible >= options.maxCircles) break;
         BallCandidate cand;
         cand.source = CandidateSource::OpenCvHough;
         cand.x = int(std::lround(c[0]));
@@ -30,8 +31,13 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
         cand.expectedRadiusPx = ball.radiusAt(cand.distancePx);
         if (!inside || !geometry.isUsed(cand.x, cand.y))
             cand.rejected = RejectReason::OutsideArea;
-        else if (cand.radiusPx > cand.expectedRadiusPx * options.maxRadiusRatio)
+        else if (cand.radiusPx > cand.expectedRadiusPx * options.maxRadiusRatio ||
+                 cand.radiusPx < cand.expectedRadiusPx * options.minRadiusRatio)
             cand.rejected = RejectReason::RadiusTooLarge;
+        if (cand.rejected == RejectReason::None)
+            ++plausible;
+        else if (implausible++ >= options.maxCircles)
+            continue;  // reported up to maxCircles of them: enough to see why
         candidates.push_back(cand);
     }
 }

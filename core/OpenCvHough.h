@@ -1,6 +1,12 @@
 #pragma once
 // Thesis section 4.2: circles from cv::HoughCircles (HOUGH_GRADIENT) on the binary image, a
 // circle larger than the ball would be at its distance rejected.
+//
+// Where we differ: the thesis validates only the strongest circle, which on a real field is
+// nearly always an artefact at the largest radius (rim speckle, clutter beyond the carpet) and
+// is rejected as too large. We walk the circles strongest first and validate up to maxCircles
+// whose radius fits the ball's at their distance (the others are reported as rejected, without
+// using up the count); maxCircles 1 and minRadiusRatio 0 give the thesis' rule.
 #include "core/BallCandidate.h"
 
 #include <opencv2/core.hpp>
@@ -25,12 +31,20 @@ struct OpenCvHoughOptions {
     // above the expected radius (1.0); HoughCircles' radius of a true ball reaches 1.23x the
     // expected one (99th percentile on drawn balls, dp 2), hence the slack.
     double maxRadiusRatio = 1.25;
-    int maxCircles = 1;         // circles validated per frame, strongest first (thesis: 1)
+    // A circle is rejected when radius < expected * minRadiusRatio (thesis: 0, no lower bound):
+    // a speck or a line's rounded end; a true ball's HoughCircles radius is rarely below 0.7x.
+    double minRadiusRatio = 0.5;
+    // Circles of plausible radius validated per frame, strongest first (thesis: 1).
+    int maxCircles = 8;
+    // Combined algorithm: OpenCV's valid circles join the specific candidates in the ranking
+    // (true), or OpenCV runs only when the specific search found nothing valid (thesis 4.3).
+    bool joinRanking = false;
 };
 
 class OpenCvHough {
 public:
-    // Appends up to maxCircles candidates; those too large are marked RadiusTooLarge.
+    // Appends up to maxCircles candidates of plausible radius, and up to as many implausible
+    // ones before them marked RadiusTooLarge (too large or too small) or OutsideArea.
     void process(const cv::Mat& binary, const OpenCvHoughOptions& options, const Geometry& geometry,
                  const BallModel& ball, std::vector<BallCandidate>& candidates);
 
