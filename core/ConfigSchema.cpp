@@ -222,6 +222,10 @@ std::vector<ConfigKey> buildSchema()
                        "Circles of plausible radius validated per frame, strongest first (thesis: 1, the strongest circle of any "
                        "radius, on a real field nearly always a rim artefact)",
                        [](auto& c) -> auto& { return c.opencvHough.maxCircles; }));
+    s.push_back(boolKey("opencv_hough.skip_implausible", false,
+                        "Circles whose radius does not fit the ball's at their distance (or off the processed area) are reported "
+                        "but do not use up max_circles; 0: the strongest max_circles circles of any radius (thesis, with 1)",
+                        [](auto& c) -> auto& { return c.opencvHough.skipImplausible; }));
     s.push_back(boolKey("opencv_hough.join_ranking", false,
                         "Combined algorithm: OpenCV always runs and its valid circles join the specific candidates in the "
                         "ranking; 0: OpenCV runs only when the specific search found nothing valid (thesis 4.3)",

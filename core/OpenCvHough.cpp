@@ -17,10 +17,10 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
     cv::HoughCircles(binary, circles_, cv::HOUGH_GRADIENT, options.dp, options.minDist, options.cannyHigh,
                      options.accThreshold, options.minRadius, options.maxRadius);
     // OpenCV returns the circles strongest first.
-    int plausible = 0;
+    int counted = 0;  // circles that use up maxCircles
     int implausible = 0;
     for (const cv::Vec3f& c : circles_) {
-        if (plausible >= options.maxCircles) break;
+        if (counted >= options.maxCircles) break;
         BallCandidate cand;
         cand.source = CandidateSource::OpenCvHough;
         cand.x = int(std::lround(c[0]));
@@ -34,8 +34,8 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
         else if (cand.radiusPx > cand.expectedRadiusPx * options.maxRadiusRatio ||
                  cand.radiusPx < cand.expectedRadiusPx * options.minRadiusRatio)
             cand.rejected = RejectReason::RadiusTooLarge;
-        if (cand.rejected == RejectReason::None)
-            ++plausible;
+        if (cand.rejected == RejectReason::None || !options.skipImplausible)
+            ++counted;
         else if (implausible++ >= options.maxCircles)
             continue;  // reported up to maxCircles of them: enough to see why
         candidates.push_back(cand);

@@ -6,7 +6,8 @@
 // nearly always an artefact at the largest radius (rim speckle, clutter beyond the carpet) and
 // is rejected as too large. We walk the circles strongest first and validate up to maxCircles
 // whose radius fits the ball's at their distance (the others are reported as rejected, without
-// using up the count); maxCircles 1 and minRadiusRatio 0 give the thesis' rule.
+// using up the count); maxCircles 1, skipImplausible false and minRadiusRatio 0 give the
+// thesis' rule.
 #include "core/BallCandidate.h"
 
 #include <opencv2/core.hpp>
@@ -34,8 +35,11 @@ struct OpenCvHoughOptions {
     // A circle is rejected when radius < expected * minRadiusRatio (thesis: 0, no lower bound):
     // a speck or a line's rounded end; a true ball's HoughCircles radius is rarely below 0.7x.
     double minRadiusRatio = 0.5;
-    // Circles of plausible radius validated per frame, strongest first (thesis: 1).
+    // Circles validated per frame, strongest first (thesis: 1).
     int maxCircles = 8;
+    // Circles whose radius does not fit (or outside the processed area) do not use up
+    // maxCircles (thesis: false, its one circle is the strongest of any radius).
+    bool skipImplausible = true;
     // Combined algorithm: OpenCV's valid circles join the specific candidates in the ranking
     // (true), or OpenCV runs only when the specific search found nothing valid (thesis 4.3).
     bool joinRanking = false;
