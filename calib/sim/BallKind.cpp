@@ -93,6 +93,8 @@ const cv::Vec3f kBallBlack(28, 28, 30);
 const cv::Vec3f kBallGreen(50, 160, 45);
 const cv::Vec3f kBallBlue(200, 72, 30);
 const cv::Vec3f kBallRed(45, 30, 200);
+const cv::Vec3f kBallFieldGreen(55, 165, 50);  // close to the carpet: the hard case of issue 9
+const cv::Vec3f kBallYellow(30, 205, 235);     // HSV ~ (27, 222, 235): above the orange hue range
 
 // Seams are thin grooves; they darken the surface a little without changing its class.
 constexpr double kSeamHalfWidth = 0.012;  // rad
@@ -113,6 +115,8 @@ std::string_view ballKindName(BallKind kind)
     case BallKind::WhiteBlackGreen: return "white-black-green";
     case BallKind::MostlyBlue: return "blue";
     case BallKind::WhiteRed: return "white-red";
+    case BallKind::GreenWhite: return "green-white";
+    case BallKind::YellowWhite: return "yellow-white";
     }
     return "orange";
 }
@@ -124,6 +128,8 @@ std::optional<BallKind> parseBallKind(std::string_view text)
         const BallKind k = kAllBallKinds[i];
         if (text == ballKindName(k) || text == thesisNumbers.substr(i, 1)) return k;
     }
+    for (BallKind k : {BallKind::GreenWhite, BallKind::YellowWhite})
+        if (text == ballKindName(k)) return k;
     return std::nullopt;
 }
 
@@ -145,6 +151,8 @@ cv::Vec3f ballSurfaceColor(BallKind kind, const cv::Vec3d& n)
         break;
     case BallKind::MostlyBlue: c = p.pentagon ? kBallWhite : kBallBlue; break;
     case BallKind::WhiteRed: c = p.pentagon ? kBallRed : kBallWhite; break;
+    case BallKind::GreenWhite: c = p.pentagon || p.index % 3 == 0 ? kBallFieldGreen : kBallWhite; break;
+    case BallKind::YellowWhite: c = p.pentagon ? kBallWhite : kBallYellow; break;
     }
     if (p.toEdge < kSeamHalfWidth) c *= kSeamShade;
     return c;

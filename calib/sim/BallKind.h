@@ -15,15 +15,25 @@ enum class BallKind {
     WhiteBlackGreen,  // ball 3: white hexagons, black pentagons, a few small green patches
     MostlyBlue,       // ball 4: blue (not team cyan) hexagons, white pentagons
     WhiteRed,         // ball 5: white with red panels
+    // Not in the thesis; balls teams meet today (issue 9).
+    GreenWhite,       // white hexagons, green pentagons and every third hexagon green (~45 % green)
+    YellowWhite,      // yellow hexagons, white pentagons (a yellow ball, hue ~27: not orange)
 };
 
 inline constexpr std::array<BallKind, 5> kAllBallKinds = {
     BallKind::Orange, BallKind::MostlyBlack, BallKind::WhiteBlackGreen, BallKind::MostlyBlue,
     BallKind::WhiteRed};
 
-// "orange", "black", "white-black-green", "blue", "white-red".
+// The thesis' five (in thesis order, kAllBallKinds) plus the two newer balls, for the optics
+// simulator's cells.
+inline constexpr std::array<BallKind, 7> kExtendedBallKinds = {
+    BallKind::Orange, BallKind::MostlyBlack, BallKind::WhiteBlackGreen, BallKind::MostlyBlue,
+    BallKind::WhiteRed, BallKind::GreenWhite, BallKind::YellowWhite};
+
+// "orange", "black", "white-black-green", "blue", "white-red", "green-white", "yellow-white".
 std::string_view ballKindName(BallKind kind);
-// Accepts the names above and the thesis' ball numbers "1".."5"; nullopt for anything else.
+// Accepts the names above and the thesis' ball numbers "1".."5" (the two newer balls have no
+// number); nullopt for anything else.
 std::optional<BallKind> parseBallKind(std::string_view text);
 
 // Unlit surface colour (BGR, 0..255) at unit vector `n` in the ball's own frame. The panels are
