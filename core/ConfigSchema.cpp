@@ -199,7 +199,7 @@ std::vector<ConfigKey> buildSchema()
                         [](auto& c) -> auto& { return c.hough.rankByScore; }));
 
     // OpenCV Hough
-    s.push_back(doubleKey("opencv_hough.dp", "ratio", 1, 4, true, "Inverse accumulator resolution of cv::HoughCircles (1: the image's, larger: coarser and faster)",
+    s.push_back(doubleKey("opencv_hough.dp", "ratio", 1, 4, false, "Inverse accumulator resolution of cv::HoughCircles (1: the image's, larger: coarser; thesis: 2, which misses and misplaces small balls)",
                           [](auto& c) -> auto& { return c.opencvHough.dp; }));
     s.push_back(doubleKey("opencv_hough.min_dist", "px", 1, 1000, true, "Minimum distance between circle centres; too small duplicates a ball, too large misses balls",
                           [](auto& c) -> auto& { return c.opencvHough.minDist; }));
@@ -226,6 +226,10 @@ std::vector<ConfigKey> buildSchema()
                         "Circles whose radius does not fit the ball's at their distance (or off the processed area) are reported "
                         "but do not use up max_circles; 0: the strongest max_circles circles of any radius (thesis, with 1)",
                         [](auto& c) -> auto& { return c.opencvHough.skipImplausible; }));
+    s.push_back(boolKey("opencv_hough.refine_centre", false,
+                        "Moves each plausible circle's centre to the centroid of the non-green pixels within the expected radius "
+                        "(HoughCircles' centre is often 2-3 px off a small ball); 0: the circle as found (thesis)",
+                        [](auto& c) -> auto& { return c.opencvHough.refineCentre; }));
     s.push_back(boolKey("opencv_hough.join_ranking", false,
                         "Combined algorithm: OpenCV always runs and its valid circles join the specific candidates in the "
                         "ranking; 0: OpenCV runs only when the specific search found nothing valid (thesis 4.3)",

@@ -9,6 +9,30 @@
 
 namespace omnitune {
 
+namespace {
+
+// The centroid of the non-green (binary 0) processed pixels within `radius` of (x, y); the
+// point itself when there are none.
+cv::Point nonGreenCentroid(const cv::Mat& binary, const Geometry& geometry, cv::Point p, double radius)
+{
+    const int r = int(std::ceil(radius));
+    long sx = 0, sy = 0, n = 0;
+    for (int y = std::max(0, p.y - r); y <= std::min(binary.rows - 1, p.y + r); ++y) {
+        const std::uint8_t* b = binary.ptr<std::uint8_t>(y);
+        for (int x = std::max(0, p.x - r); x <= std::min(binary.cols - 1, p.x + r); ++x) {
+            if (b[x] != 0 || (x - p.x) * (x - p.x) + (y - p.y) * (y - p.y) > radius * radius) continue;
+            sx += x;
+            sy += y;
+            ++n;
+        }
+    }
+    if (n == 0) return p;
+    const cv::Point c(int(std::lround(double(sx) / n)), int(std::lround(double(sy) / n)));
+    return geometry.isUsed(c.x, c.y) ? c : p;
+}
+
+}  // namespace
+
 void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& options, const Geometry& geometry,
                           const BallModel& ball, std::vector<BallCandidate>& candidates)
 {
@@ -34,6 +58,14 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
         else if (cand.radiusPx > cand.expectedRadiusPx * options.maxRadiusRatio ||
                  cand.radiusPx < cand.expectedRadiusPx * options.minRadiusRatio)
             cand.rejected = RejectReason::RadiusTooLarge;
+        if (cand.rejected == RejectReason::None && options.refineCentre) {
+            cv::Point p(cand.x, cand.y);
+            for (int it = 0; it < 2; ++it) p = nonGreenCentroid(binary, geometry, p, cand.expectedRadiusPx);
+            cand.x = p.x;
+            cand.y = p.y;
+            cand.distancePx = geometry.distanceAt(p.x, p.y);
+            cand.expectedRadiusPx = ball.radiusAt(cand.distancePx);
+        }
         if (cand.rejected == RejectReason::None || !options.skipImplausible)
             ++counted;
         else if (implausible++ >= options.maxCircles)

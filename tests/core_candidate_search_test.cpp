@@ -172,6 +172,7 @@ private slots:
     {
         Config c;
         c.algorithm = Algorithm::OpenCv;
+        c.opencvHough.dp = 2;  // the thesis' accumulator, where the large disc is the strongest circle
         cv::Mat frame = greenField(c);
         // A disc far too large for its distance: HoughCircles' strongest circle.
         cv::circle(frame, pointAt(c, 210, 300), int(3 * expectedRadius(c, 210)), kOrange, cv::FILLED);
