@@ -11,24 +11,26 @@ namespace omnitune {
 
 namespace {
 
-// The centroid of the non-green (binary 0) processed pixels within `radius` of (x, y); the
-// point itself when there are none.
-cv::Point nonGreenCentroid(const cv::Mat& binary, const Geometry& geometry, cv::Point p, double radius)
+// The centroid of the non-green (binary 0) pixels within `radius` of p; p itself when there are
+// none.
+cv::Point2d nonGreenCentroid(const cv::Mat& binary, cv::Point2d p, double radius)
 {
-    const int r = int(std::ceil(radius));
-    long sx = 0, sy = 0, n = 0;
-    for (int y = std::max(0, p.y - r); y <= std::min(binary.rows - 1, p.y + r); ++y) {
+    double sx = 0, sy = 0;
+    long n = 0;
+    const int y0 = std::max(0, int(std::floor(p.y - radius)));
+    const int y1 = std::min(binary.rows - 1, int(std::ceil(p.y + radius)));
+    const int x0 = std::max(0, int(std::floor(p.x - radius)));
+    const int x1 = std::min(binary.cols - 1, int(std::ceil(p.x + radius)));
+    for (int y = y0; y <= y1; ++y) {
         const std::uint8_t* b = binary.ptr<std::uint8_t>(y);
-        for (int x = std::max(0, p.x - r); x <= std::min(binary.cols - 1, p.x + r); ++x) {
+        for (int x = x0; x <= x1; ++x) {
             if (b[x] != 0 || (x - p.x) * (x - p.x) + (y - p.y) * (y - p.y) > radius * radius) continue;
             sx += x;
             sy += y;
             ++n;
         }
     }
-    if (n == 0) return p;
-    const cv::Point c(int(std::lround(double(sx) / n)), int(std::lround(double(sy) / n)));
-    return geometry.isUsed(c.x, c.y) ? c : p;
+    return n > 0 ? cv::Point2d(sx / n, sy / n) : p;
 }
 
 }  // namespace
@@ -59,12 +61,16 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
                  cand.radiusPx < cand.expectedRadiusPx * options.minRadiusRatio)
             cand.rejected = RejectReason::RadiusTooLarge;
         if (cand.rejected == RejectReason::None && options.refineCentre) {
-            cv::Point p(cand.x, cand.y);
-            for (int it = 0; it < 2; ++it) p = nonGreenCentroid(binary, geometry, p, cand.expectedRadiusPx);
-            cand.x = p.x;
-            cand.y = p.y;
-            cand.distancePx = geometry.distanceAt(p.x, p.y);
-            cand.expectedRadiusPx = ball.radiusAt(cand.distancePx);
+            // Sub-pixel steps; the window reaches a pixel past the ball for its blurred border.
+            cv::Point2d p(c[0], c[1]);
+            for (int it = 0; it < 3; ++it) p = nonGreenCentroid(binary, p, cand.expectedRadiusPx + 1.0);
+            const cv::Point q(int(std::lround(p.x)), int(std::lround(p.y)));
+            if (q.x >= 0 && q.y >= 0 && q.x < binary.cols && q.y < binary.rows && geometry.isUsed(q.x, q.y)) {
+                cand.x = q.x;
+                cand.y = q.y;
+                cand.distancePx = geometry.distanceAt(q.x, q.y);
+                cand.expectedRadiusPx = ball.radiusAt(cand.distancePx);
+            }
         }
         if (cand.rejected == RejectReason::None || !options.skipImplausible)
             ++counted;

@@ -46,8 +46,8 @@ struct OpenCvHoughOptions {
     // maxCircles (thesis: false, its one circle is the strongest of any radius).
     bool skipImplausible = true;
     // Moves each plausible circle's centre to the centroid of the non-green pixels within its
-    // radius (twice): HoughCircles' centre on the coarse dp 2 grid is often 2-3 px off a small
-    // ball, enough to fail circularity (thesis: false, the circle as found).
+    // expected radius + 1 px (three sub-pixel steps): HoughCircles' centre is often 2-3 px off
+    // a small ball, enough to fail circularity (thesis: false, the circle as found).
     bool refineCentre = true;
     // Combined algorithm: OpenCV's valid circles join the specific candidates in the ranking
     // (true), or OpenCV runs only when the specific search found nothing valid (thesis 4.3).

@@ -193,6 +193,34 @@ private slots:
         QCOMPARE(r.candidates[0].rejected, RejectReason::RadiusTooLarge);  // still reported
     }
 
+    // HoughCircles' centre on its accumulator grid is off by a pixel or more; the non-green
+    // centroid puts it on the drawn ball.
+    void openCvCentresAreRefined()
+    {
+        Config c;
+        c.opencvHough.dp = 2;
+        double offRaw = 0;
+        double offRefined = 0;
+        for (int i = 0; i < 6; ++i) {
+            cv::Mat frame = greenField(c);
+            const double d = 90 + 25 * i;
+            const cv::Point ball = drawBall(frame, c, d, 37.0 + 53 * i);
+            const EdgeStages s(c, frame);
+            OpenCvHough hough;
+            for (bool refine : {false, true}) {
+                c.opencvHough.refineCentre = refine;
+                std::vector<BallCandidate> cands;
+                hough.process(s.binary, c.opencvHough, s.geometry, s.ball, cands);
+                QVERIFY(!cands.empty());
+                const double off = std::hypot(cands[0].x - ball.x, cands[0].y - ball.y);
+                (refine ? offRefined : offRaw) = std::max(refine ? offRefined : offRaw, off);
+            }
+        }
+        qDebug() << "largest centre offset: raw" << offRaw << "refined" << offRefined;
+        QVERIFY(offRefined <= 1.0);
+        QVERIFY(offRefined < offRaw);
+    }
+
     void openCvRejectsTooSmallCircles()
     {
         Config c;
