@@ -168,7 +168,7 @@ std::vector<ConfigKey> buildSchema()
                         [](auto& c) -> auto& { return c.hough.multipleMaxima; }));
     s.push_back(listKey("hough.area_bounds", "px", 1, 4096, true, "Outer bounds of the radial areas, increasing; area i spans (bound[i-1], bound[i]]",
                         [](auto& c) -> auto& { return c.hough.areaBounds; }));
-    s.push_back(intKey("hough.min_accumulator", "votes", 1, 100000, false, "A maximum whose 3x3 vote sum is below this gives no candidate; higher: fewer, stronger candidates",
+    s.push_back(intKey("hough.min_accumulator", "votes", 1, 100000, false, "A maximum whose vote sum over its nine-pixel neighbourhood is below this gives no candidate; higher: fewer, stronger candidates",
                        [](auto& c) -> auto& { return c.hough.minAccumulator; }));
     s.push_back(boolKey("hough.radius_at_centre", false,
                         "Vote with the radius expected at the candidate centre's distance; 0: at the edge pixel's (thesis' text, shifts maxima outwards)",
@@ -228,7 +228,7 @@ std::vector<ConfigKey> buildSchema()
                         [](auto& c) -> auto& { return c.opencvHough.skipImplausible; }));
     s.push_back(boolKey("opencv_hough.refine_centre", false,
                         "Moves each plausible circle's centre to the centroid of the non-green pixels within the expected radius "
-                        "(HoughCircles' centre is often 2-3 px off a small ball); 0: the circle as found (thesis)",
+                        "(HoughCircles' centre is often a few px off a small ball); 0: the circle as found (thesis)",
                         [](auto& c) -> auto& { return c.opencvHough.refineCentre; }));
     s.push_back(boolKey("opencv_hough.join_ranking", false,
                         "Combined algorithm: OpenCV always runs and its valid circles join the specific candidates in the "
