@@ -199,7 +199,7 @@ std::vector<ConfigKey> buildSchema()
                         [](auto& c) -> auto& { return c.hough.rankByScore; }));
 
     // OpenCV Hough
-    s.push_back(doubleKey("opencv_hough.dp", "ratio", 1, 4, false, "Inverse accumulator resolution of cv::HoughCircles (1: the image's, larger: coarser; thesis: 2, which misses and misplaces small balls)",
+    s.push_back(doubleKey("opencv_hough.dp", "ratio", 1, 4, true, "Inverse accumulator resolution of cv::HoughCircles (1: the image's, larger: coarser and faster)",
                           [](auto& c) -> auto& { return c.opencvHough.dp; }));
     s.push_back(doubleKey("opencv_hough.min_dist", "px", 1, 1000, true, "Minimum distance between circle centres; too small duplicates a ball, too large misses balls",
                           [](auto& c) -> auto& { return c.opencvHough.minDist; }));

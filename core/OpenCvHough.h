@@ -20,17 +20,15 @@ class Geometry;
 class BallModel;
 
 struct OpenCvHoughOptions {
-    // Inverse accumulator resolution, 1..4 (thesis: 2, half width and height). 1: on the optics
-    // simulator's tours OpenCV found 51 % of balls instead of 45 % (acc_threshold 10, centres
-    // refined), no slower: the finer accumulator gives fewer spurious circles to validate.
-    double dp = 1.0;
+    // Inverse accumulator resolution (2: half width and height), 1..4. 1 with acc_threshold 10
+    // finds more balls with OpenCV alone on the optics tours (41 % instead of 36 %) but fewer
+    // with combined (46.5 % instead of 47.1 %, 3 false positives in 1280 frames instead of 1).
+    double dp = 2.0;
     double minDist = 12.0;      // px between two circle centres; smaller: neighbours duplicate, larger: balls missed
     double cannyHigh = 180.0;   // HoughCircles' internal Canny high threshold (low is half of it)
     // Accumulator votes a centre needs; lower: more (false) circles. At 20, balls under ~8 px
     // radius are mostly missed on the binary image (measured on drawn balls, 70..230 px out).
-    // With dp 1: 12 found 39 % on the optics tours, 10 found 51 %, 8 found 52 % with 2 false
-    // positives in 360 frames.
-    double accThreshold = 10.0;
+    double accThreshold = 12.0;
     int minRadius = 3;          // px
     int maxRadius = 25;         // px
     // A circle is rejected when radius > expected * maxRadiusRatio. The thesis rejects any circle

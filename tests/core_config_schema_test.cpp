@@ -105,7 +105,7 @@ private slots:
         QTest::newRow("near robot 70 px") << "hough.near_robot_radius" << "70" << true;
         QTest::newRow("near robot counts twice") << "hough.near_robot_weight" << "2" << true;
         QTest::newRow("multiple maxima") << "hough.multiple_maxima" << "true" << true;
-        QTest::newRow("dp 1") << "opencv_hough.dp" << "1" << false;  // thesis 2: misses small balls (OpenCvHough.h)
+        QTest::newRow("dp 2") << "opencv_hough.dp" << "2" << true;
         QTest::newRow("min dist 12") << "opencv_hough.min_dist" << "12" << true;
         QTest::newRow("HoughCircles Canny 180") << "opencv_hough.canny_high" << "180" << true;
         QTest::newRow("radius from 3") << "opencv_hough.min_radius" << "3" << true;
