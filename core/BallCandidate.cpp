@@ -2,6 +2,16 @@
 
 namespace omnitune {
 
+std::string_view candidateSourceName(CandidateSource s)
+{
+    switch (s) {
+    case CandidateSource::SpecificHough: return "specific";
+    case CandidateSource::OpenCvHough: return "opencv";
+    case CandidateSource::BlobSeed: return "blob";
+    }
+    return "?";
+}
+
 std::string_view rejectReasonName(RejectReason r)
 {
     switch (r) {

@@ -6,12 +6,16 @@
 
 namespace omnitune {
 
-enum class CandidateSource { SpecificHough, OpenCvHough };
+// BlobSeed: a compact non-green blob of ball size (hough.blob_seeds), not a Hough maximum.
+enum class CandidateSource { SpecificHough, OpenCvHough, BlobSeed };
+
+std::string_view candidateSourceName(CandidateSource s);
 
 enum class RejectReason {
     None,             // accepted
     OutsideArea,      // centre not on a processed pixel
-    RadiusTooLarge,   // OpenCV circle larger than the expected radius at its distance
+    RadiusTooLarge,   // OpenCV circle larger than the expected radius at its distance (or, with
+                      // opencv_hough.min_radius_ratio, far smaller)
     TooSmall,         // expected radius below validation.min_radius_px: too far to judge the shape
     NonGreen,         // too much green in the ball square
     NonBlack,         // too much black in the ball square (a robot)
@@ -45,7 +49,10 @@ struct BallCandidate {
     double distancePx = 0.0;  // to the robot centre
     double radiusPx = 0.0;    // expected radius (specific) or the circle's radius (OpenCV)
     double expectedRadiusPx = 0.0;
-    double accumulator = 0.0; // 3x3 Hough sum (specific) or 0 (OpenCV gives no votes)
+    double accumulator = 0.0; // 3x3 Hough sum (specific; scaled up when edge pixels were
+                              // subsampled) or 0 (OpenCV gives no votes)
+    double score = 0.0;       // 0..1, all validation tests in one number (CandidateScore.h);
+                              // the valid candidate with the highest is chosen
     ValidationScores scores;
     RejectReason rejected = RejectReason::None;
 };

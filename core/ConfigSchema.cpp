@@ -200,11 +200,35 @@ std::vector<ConfigKey> buildSchema()
                         [](auto& c) -> auto& { return c.hough.multipleMaxima; }));
     s.push_back(listKey("hough.area_bounds", "px", 1, 4096, true, "Outer bounds of the radial areas, increasing; area i spans (bound[i-1], bound[i]]",
                         [](auto& c) -> auto& { return c.hough.areaBounds; }));
-    s.push_back(intKey("hough.min_accumulator", "votes", 1, 100000, false, "A maximum whose 3x3 vote sum is below this gives no candidate; higher: fewer, stronger candidates",
+    s.push_back(intKey("hough.min_accumulator", "votes", 1, 100000, false, "A maximum whose vote sum over its nine-pixel neighbourhood is below this gives no candidate; higher: fewer, stronger candidates",
                        [](auto& c) -> auto& { return c.hough.minAccumulator; }));
     s.push_back(boolKey("hough.radius_at_centre", false,
                         "Vote with the radius expected at the candidate centre's distance; 0: at the edge pixel's (thesis' text, shifts maxima outwards)",
                         [](auto& c) -> auto& { return c.hough.radiusAtCentre; }));
+    s.push_back(intKey("hough.maxima_per_area", "maxima", 1, 20, false,
+                       "Local maxima kept per radial area after non-maximum suppression (thesis: 1, where any stronger clutter "
+                       "maximum in the ball's area hides the ball); more: more candidates to validate",
+                       [](auto& c) -> auto& { return c.hough.maximaPerArea; }));
+    s.push_back(doubleKey("hough.suppression_radii", "radii", 0.1, 10, false,
+                          "A kept maximum suppresses weaker ones closer than this many expected ball radii (same ball, or a ball "
+                          "and its own rim maxima); larger: two balls close together give one candidate",
+                          [](auto& c) -> auto& { return c.hough.suppressionRadii; }));
+    s.push_back(intKey("hough.max_candidates", "candidates", 1, 200, false,
+                       "Candidates per frame at most (maxima and blob seeds): each area's strongest, then each area's second, ...; "
+                       "bounds the validation time",
+                       [](auto& c) -> auto& { return c.hough.maxCandidates; }));
+    s.push_back(intKey("hough.max_edge_pixels", "px", 0, 1000000, false,
+                       "Edge pixels voting per frame at most; beyond it an even, deterministic subsample votes (the accumulator "
+                       "is scaled back up). Bounds the worst frame's time (noise, dim speckle); 0: no cap",
+                       [](auto& c) -> auto& { return c.hough.maxEdgePixels; }));
+    s.push_back(boolKey("hough.blob_seeds", false,
+                        "Also seed candidates at compact non-green blobs whose size matches the ball's at their distance (found "
+                        "even when clutter out-votes the ball)",
+                        [](auto& c) -> auto& { return c.hough.blobSeeds; }));
+    s.push_back(boolKey("hough.rank_by_score", false,
+                        "Choose among valid candidates by one score combining every validation test and the votes; 0: the "
+                        "thesis' best circularity, then most votes",
+                        [](auto& c) -> auto& { return c.hough.rankByScore; }));
 
     // OpenCV Hough
     s.push_back(doubleKey("opencv_hough.dp", "ratio", 1, 4, true, "Inverse accumulator resolution of cv::HoughCircles (1: the image's, larger: coarser and faster)",
@@ -223,8 +247,25 @@ std::vector<ConfigKey> buildSchema()
     s.push_back(doubleKey("opencv_hough.max_radius_ratio", "ratio", 0.5, 3, false,
                           "A circle above expected radius x this is rejected (thesis: 1.0; HoughCircles overestimates a true ball's radius by up to ~1.23)",
                           [](auto& c) -> auto& { return c.opencvHough.maxRadiusRatio; }));
-    s.push_back(intKey("opencv_hough.max_circles", "circles", 1, 50, true, "Circles validated per frame, strongest first (thesis: the first)",
+    s.push_back(doubleKey("opencv_hough.min_radius_ratio", "ratio", 0, 1, false,
+                          "A circle below expected radius x this is rejected too (thesis: 0, no lower bound); a speck or a line end",
+                          [](auto& c) -> auto& { return c.opencvHough.minRadiusRatio; }));
+    s.push_back(intKey("opencv_hough.max_circles", "circles", 1, 50, false,
+                       "Circles of plausible radius validated per frame, strongest first (thesis: 1, the strongest circle of any "
+                       "radius, on a real field nearly always a rim artefact)",
                        [](auto& c) -> auto& { return c.opencvHough.maxCircles; }));
+    s.push_back(boolKey("opencv_hough.skip_implausible", false,
+                        "Circles whose radius does not fit the ball's at their distance (or off the processed area) are reported "
+                        "but do not use up max_circles; 0: the strongest max_circles circles of any radius (thesis, with 1)",
+                        [](auto& c) -> auto& { return c.opencvHough.skipImplausible; }));
+    s.push_back(boolKey("opencv_hough.refine_centre", false,
+                        "Moves each plausible circle's centre to the centroid of the non-green pixels within the expected radius "
+                        "(HoughCircles' centre is often a few px off a small ball); 0: the circle as found (thesis)",
+                        [](auto& c) -> auto& { return c.opencvHough.refineCentre; }));
+    s.push_back(boolKey("opencv_hough.join_ranking", false,
+                        "Combined algorithm: OpenCV always runs and its valid circles join the specific candidates in the "
+                        "ranking; 0: OpenCV runs only when the specific search found nothing valid (thesis 4.3)",
+                        [](auto& c) -> auto& { return c.opencvHough.joinRanking; }));
 
     // validation
     s.push_back(doubleKey("validation.min_non_green_pct", "%", 0, 100, true, "Non-green share the ball square needs; lower lets carpet patches through",
@@ -468,6 +509,8 @@ std::vector<ConfigIssue> checkConfig(const Config& c, const std::string& file)
     if (c.hough.areaBounds.empty()) inconsistent("hough.area_bounds", "needs at least one bound");
     if (c.hough.areaBounds.size() > 254) inconsistent("hough.area_bounds", "at most 254 areas");
     if (!strictlyIncreasing(c.hough.areaBounds)) inconsistent("hough.area_bounds", "must be strictly increasing");
+    if (c.opencvHough.minRadiusRatio >= c.opencvHough.maxRadiusRatio)
+        inconsistent("opencv_hough.min_radius_ratio", "min_radius_ratio must be below max_radius_ratio");
     if (c.opencvHough.minRadius > c.opencvHough.maxRadius)
         inconsistent("opencv_hough.min_radius", "min_radius is above max_radius");
     for (ColorClass cls : kClassificationOrder) {

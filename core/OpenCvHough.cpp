@@ -9,6 +9,32 @@
 
 namespace omnitune {
 
+namespace {
+
+// The centroid of the non-green (binary 0) pixels within `radius` of p; p itself when there are
+// none.
+cv::Point2d nonGreenCentroid(const cv::Mat& binary, cv::Point2d p, double radius)
+{
+    double sx = 0, sy = 0;
+    long n = 0;
+    const int y0 = std::max(0, int(std::floor(p.y - radius)));
+    const int y1 = std::min(binary.rows - 1, int(std::ceil(p.y + radius)));
+    const int x0 = std::max(0, int(std::floor(p.x - radius)));
+    const int x1 = std::min(binary.cols - 1, int(std::ceil(p.x + radius)));
+    for (int y = y0; y <= y1; ++y) {
+        const std::uint8_t* b = binary.ptr<std::uint8_t>(y);
+        for (int x = x0; x <= x1; ++x) {
+            if (b[x] != 0 || (x - p.x) * (x - p.x) + (y - p.y) * (y - p.y) > radius * radius) continue;
+            sx += x;
+            sy += y;
+            ++n;
+        }
+    }
+    return n > 0 ? cv::Point2d(sx / n, sy / n) : p;
+}
+
+}  // namespace
+
 void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& options, const Geometry& geometry,
                           const BallModel& ball, std::vector<BallCandidate>& candidates)
 {
@@ -17,9 +43,10 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
     cv::HoughCircles(binary, circles_, cv::HOUGH_GRADIENT, options.dp, options.minDist, options.cannyHigh,
                      options.accThreshold, options.minRadius, options.maxRadius);
     // OpenCV returns the circles strongest first.
-    const int n = std::min<int>(int(circles_.size()), options.maxCircles);
-    for (int i = 0; i < n; ++i) {
-        const cv::Vec3f& c = circles_[std::size_t(i)];
+    int counted = 0;  // circles that use up maxCircles
+    int implausible = 0;
+    for (const cv::Vec3f& c : circles_) {
+        if (counted >= options.maxCircles) break;
         BallCandidate cand;
         cand.source = CandidateSource::OpenCvHough;
         cand.x = int(std::lround(c[0]));
@@ -30,8 +57,25 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
         cand.expectedRadiusPx = ball.radiusAt(cand.distancePx);
         if (!inside || !geometry.isUsed(cand.x, cand.y))
             cand.rejected = RejectReason::OutsideArea;
-        else if (cand.radiusPx > cand.expectedRadiusPx * options.maxRadiusRatio)
+        else if (cand.radiusPx > cand.expectedRadiusPx * options.maxRadiusRatio ||
+                 cand.radiusPx < cand.expectedRadiusPx * options.minRadiusRatio)
             cand.rejected = RejectReason::RadiusTooLarge;
+        if (cand.rejected == RejectReason::None && options.refineCentre) {
+            // Sub-pixel steps; the window reaches a pixel past the ball for its blurred border.
+            cv::Point2d p(c[0], c[1]);
+            for (int it = 0; it < 3; ++it) p = nonGreenCentroid(binary, p, cand.expectedRadiusPx + 1.0);
+            const cv::Point q(int(std::lround(p.x)), int(std::lround(p.y)));
+            if (q.x >= 0 && q.y >= 0 && q.x < binary.cols && q.y < binary.rows && geometry.isUsed(q.x, q.y)) {
+                cand.x = q.x;
+                cand.y = q.y;
+                cand.distancePx = geometry.distanceAt(q.x, q.y);
+                cand.expectedRadiusPx = ball.radiusAt(cand.distancePx);
+            }
+        }
+        if (cand.rejected == RejectReason::None || !options.skipImplausible)
+            ++counted;
+        else if (implausible++ >= options.maxCircles)
+            continue;  // reported up to maxCircles of them: enough to see why
         candidates.push_back(cand);
     }
 }

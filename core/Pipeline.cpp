@@ -1,6 +1,7 @@
 #include "core/Pipeline.h"
 
 #include "core/BallPosition.h"
+#include "core/CandidateScore.h"
 #include "core/ConfigSchema.h"
 #include "core/FrameColour.h"
 #include "core/FrontEnd.h"
@@ -41,21 +42,16 @@ bool anyValid(const std::vector<BallCandidate>& candidates)
     return false;
 }
 
-// The chosen ball: the valid candidate with the best circularity, then the most votes.
-int chooseCandidate(std::vector<BallCandidate>& candidates)
+// Scores every candidate (shown for the rejected ones too) and chooses the valid one that
+// preferCandidate() puts first; the other valid ones become NotChosen.
+int chooseCandidate(std::vector<BallCandidate>& candidates, bool byScore)
 {
     int best = -1;
     for (int i = 0; i < int(candidates.size()); ++i) {
-        const BallCandidate& c = candidates[std::size_t(i)];
+        BallCandidate& c = candidates[std::size_t(i)];
+        c.score = candidateScore(c);
         if (c.rejected != RejectReason::None) continue;
-        if (best < 0) {
-            best = i;
-            continue;
-        }
-        const BallCandidate& b = candidates[std::size_t(best)];
-        if (c.scores.circularityPct > b.scores.circularityPct ||
-            (c.scores.circularityPct == b.scores.circularityPct && c.accumulator > b.accumulator))
-            best = i;
+        if (best < 0 || preferCandidate(c, candidates[std::size_t(best)], byScore)) best = i;
     }
     for (int i = 0; i < int(candidates.size()); ++i)
         if (i != best && candidates[std::size_t(i)].rejected == RejectReason::None)
@@ -137,6 +133,7 @@ struct Pipeline::Impl {
     void searchSpecific(PipelineResult& r, Stopwatch& clock)
     {
         hough.process(edges, binary, r.candidates);
+        r.hough = hough.stats();
         r.timings.houghMs += clock.lap();
         validateFrom(0, r);
         r.timings.validationMs += clock.lap();
@@ -152,12 +149,15 @@ struct Pipeline::Impl {
         r.timings.validationMs += clock.lap();
     }
 
-    // Thesis 4.3: which searches run; combined tries OpenCV only when the specific one fails.
+    // Thesis 4.3: which searches run; combined tries OpenCV only when the specific one fails
+    // (or always, its circles joining the ranking, with opencv_hough.join_ranking).
     void searchBall(PipelineResult& r, Stopwatch& clock)
     {
         const Algorithm alg = config.algorithm;
         if (alg == Algorithm::Specific || alg == Algorithm::Combined) searchSpecific(r, clock);
-        if (alg == Algorithm::OpenCv || (alg == Algorithm::Combined && !anyValid(r.candidates))) searchOpenCv(r, clock);
+        if (alg == Algorithm::OpenCv ||
+            (alg == Algorithm::Combined && (config.opencvHough.joinRanking || !anyValid(r.candidates))))
+            searchOpenCv(r, clock);
     }
 
     void fillStageImages(const cv::Mat& frame, PixelFormat format, PipelineResult& r) const
@@ -195,6 +195,7 @@ void Pipeline::process(const cv::Mat& frame, PixelFormat format, PipelineResult&
     r.candidates.clear();
     r.detection = BallDetection{};
     r.timings = StageTimings{};
+    r.hough = HoughStats{};
     if (!r.error.empty()) return;
 
     Stopwatch clock;
@@ -204,7 +205,7 @@ void Pipeline::process(const cv::Mat& frame, PixelFormat format, PipelineResult&
     p.colour = &colour;
     p.searchBall(r, clock);
     p.colour = nullptr;
-    const int best = chooseCandidate(r.candidates);
+    const int best = chooseCandidate(r.candidates, p.config.hough.rankByScore);
     if (best >= 0)
         r.detection = detectionOf(r.candidates[std::size_t(best)], best, p.config.geometry, p.distanceMap);
     r.timings.totalMs = clock.total();

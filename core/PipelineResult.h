@@ -1,6 +1,7 @@
 #pragma once
 // What one pipeline call produces.
 #include "core/BallCandidate.h"
+#include "core/SpecificHough.h"
 
 #include <opencv2/core.hpp>
 
@@ -44,6 +45,7 @@ struct PipelineResult {
     BallDetection detection;
     std::vector<BallCandidate> candidates;
     StageTimings timings;
+    HoughStats hough;   // edge pixels voting (subsampled beyond hough.max_edge_pixels), maxima, seeds
     StageImages stages;
     cv::Mat classes;    // CV_8UC1 colour class ids (always filled)
 

@@ -55,7 +55,8 @@ SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry
     accumulator_ = cv::Mat::zeros(size, CV_16UC1);
     sums_ = cv::Mat::zeros(size, CV_32SC1);
     rowSums_.assign(std::size_t(size.width) * 3, 0);
-    best_.resize(options.multipleMaxima ? b.size() : 1);
+    peaks_.resize(options.multipleMaxima ? b.size() : 1);
+    best_.reserve(std::size_t(std::max(1, options.maxCandidates)));
 }
 
 int SpecificHough::areaOf(double distance) const
@@ -65,24 +66,87 @@ int SpecificHough::areaOf(double distance) const
     return int(std::min<std::size_t>(std::size_t(it - b.begin()), b.size() - 1));
 }
 
+BallCandidate SpecificHough::candidateAt(int x, int y, std::int32_t sum, CandidateSource source) const
+{
+    BallCandidate c;
+    c.source = source;
+    c.x = x;
+    c.y = y;
+    c.accumulator = std::round(sum * voteScale_);
+    c.distancePx = geometry_->distanceAt(x, y);
+    c.area = areaOf(c.distancePx);
+    c.expectedRadiusPx = ball_->radiusAt(c.distancePx);
+    c.radiusPx = c.expectedRadiusPx;
+    return c;
+}
+
 void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::vector<BallCandidate>& candidates)
 {
     const cv::Size size = geometry_->imageSize();
     CV_Assert(edges.type() == CV_8UC1 && edges.size() == size);
     CV_Assert(binary.type() == CV_8UC1 && binary.size() == size);
-    const int w = size.width;
-    const int h = size.height;
+    stats_ = HoughStats{};
+    vote(edges, binary);
+    sum3x3();
+    // Seeds keep up to a quarter of the candidate budget; the maxima get the rest.
+    const std::vector<BlobSeed>* seeds = nullptr;
+    int reserved = 0;
+    if (options_.blobSeeds) {
+        seeds = &blobs_.find(binary, *geometry_, *ball_, std::max(1, options_.maxCandidates / 4));
+        reserved = int(seeds->size());
+    }
+    findMaxima(std::max(1, options_.maxCandidates - reserved));
+    const std::size_t first = candidates.size();
+    for (const BallCandidate& b : best_) candidates.push_back(b);
+    if (!seeds) return;
+    const std::size_t maxima = candidates.size();
+    for (const BlobSeed& seed : *seeds) {
+        if (int(candidates.size() - first) >= options_.maxCandidates) break;
+        // A maximum on the blob already stands for it.
+        const double r = ball_->radiusAt(geometry_->distanceAt(seed.x, seed.y));
+        bool covered = false;
+        for (std::size_t i = first; i < maxima && !covered; ++i)
+            covered = std::hypot(candidates[i].x - seed.x, candidates[i].y - seed.y) < 0.5 * r;
+        if (covered) continue;
+        candidates.push_back(candidateAt(seed.x, seed.y, sums_.ptr<std::int32_t>(seed.y)[seed.x], CandidateSource::BlobSeed));
+        ++stats_.blobSeeds;
+    }
+}
+
+void SpecificHough::vote(const cv::Mat& edges, const cv::Mat& binary)
+{
+    const int w = edges.cols;
+    const int h = edges.rows;
+    const auto& spans = geometry_->spans();
+
+    // The cap: count the edge pixels first; beyond the cap, a Bresenham-like stride lets an
+    // evenly spread `cap` of them vote (deterministic: same frame, same votes).
+    std::int64_t count = 0;
+    for (const RowSpan& s : spans) {
+        const std::uint8_t* e = edges.ptr<std::uint8_t>(s.y);
+        for (int x = s.x0; x < s.x1; ++x) count += e[x] != 0;
+    }
+    const std::int64_t cap = options_.maxEdgePixels > 0 ? std::min<std::int64_t>(count, options_.maxEdgePixels) : count;
+    std::int64_t phase = 0;
+    int voting = 0;
 
     // Votes: every edge pixel adds its weight on its locus, at centres that are processed and
     // not green (binary 0): weight & ~binary is the weight where binary is 0, else 0.
     const double cx0 = geometry_->options().centerX;
     const double cy0 = geometry_->options().centerY;
     fillBytes(accumulator_, 0);
-    for (const RowSpan& s : geometry_->spans()) {
+    for (const RowSpan& s : spans) {
         const std::uint8_t* e = edges.ptr<std::uint8_t>(s.y);
         const float* dist = geometry_->distance().ptr<float>(s.y);
         for (int x = s.x0; x < s.x1; ++x) {
-            if (!e[x] || dist[x] < 0.5f) continue;
+            if (!e[x]) continue;
+            if (cap < count) {
+                phase += cap;
+                if (phase < count) continue;
+                phase -= count;
+            }
+            ++voting;
+            if (dist[x] < 0.5f) continue;
             const float nx = float((x - cx0) / dist[x]);  // unit ray from the robot centre
             const float ny = float((s.y - cy0) / dist[x]);
             const auto& locus = loci_[std::min(std::size_t(cvRound(dist[x])), loci_.size() - 1)];
@@ -102,7 +166,15 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
             }
         }
     }
+    stats_.edgePixels = int(count);
+    stats_.votingPixels = voting;
+    voteScale_ = voting > 0 ? double(count) / voting : 1.0;
+}
 
+void SpecificHough::sum3x3()
+{
+    const int w = accumulator_.cols;
+    const int h = accumulator_.rows;
     // 3x3 sums: horizontal sums in a 3-row ring, then vertical. Border rows/columns stay 0.
     auto rowSum = [&](int y) -> std::int32_t* {
         std::int32_t* out = rowSums_.data() + std::size_t(y % 3) * std::size_t(w);
@@ -126,32 +198,104 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
             for (int x = 0; x < w; ++x) out[x] = up[x] + mid[x] + down[x];
         }
     }
+}
 
-    // The maximum of the sums in each radial area (or one absolute maximum).
-    for (auto& b : best_) b = BallCandidate{};
-    for (const RowSpan& s : geometry_->spans()) {
-        const std::int32_t* sum = sums_.ptr<std::int32_t>(s.y);
-        const std::uint8_t* area = areaIndex_.ptr<std::uint8_t>(s.y);
-        for (int x = s.x0; x < s.x1; ++x) {
-            if (area[x] == 255) continue;
-            BallCandidate& b = best_[area[x]];
-            if (sum[x] > b.accumulator) {
-                b.accumulator = sum[x];
-                b.x = x;
-                b.y = s.y;
+void SpecificHough::findMaxima(int cap)
+{
+    best_.clear();
+    // The scaled sum must reach minAccumulator (and be positive).
+    const std::int32_t minRaw =
+        std::max<std::int32_t>(1, std::int32_t(std::ceil(options_.minAccumulator / voteScale_ - 1e-9)));
+    const int perArea = options_.multipleMaxima ? options_.maximaPerArea : 1;
+
+    if (perArea == 1) {
+        // The thesis: the absolute maximum of each radial area (or of the ring).
+        std::vector<Peak>& top = kept_;
+        top.assign(std::size_t(areaCount()), Peak{0, 0, 0, 0});
+        for (const RowSpan& s : geometry_->spans()) {
+            const std::int32_t* sum = sums_.ptr<std::int32_t>(s.y);
+            const std::uint8_t* area = areaIndex_.ptr<std::uint8_t>(s.y);
+            for (int x = s.x0; x < s.x1; ++x) {
+                if (area[x] == 255) continue;
+                Peak& b = top[area[x]];
+                if (sum[x] > b.sum) b = Peak{sum[x], x, s.y, 0};
             }
         }
+        for (const Peak& p : top) {
+            if (p.sum < minRaw) continue;
+            if (int(best_.size()) >= cap) break;
+            best_.push_back(candidateAt(p.x, p.y, p.sum, CandidateSource::SpecificHough));
+        }
+        stats_.localMaxima = int(best_.size());
+        return;
     }
-    for (std::size_t i = 0; i < best_.size(); ++i) {
-        BallCandidate c = best_[i];
-        if (c.accumulator < options_.minAccumulator || c.accumulator <= 0) continue;
-        c.source = CandidateSource::SpecificHough;
-        c.distancePx = geometry_->distanceAt(c.x, c.y);
-        c.area = areaOf(c.distancePx);
-        c.expectedRadiusPx = ball_->radiusAt(c.distancePx);
-        c.radiusPx = c.expectedRadiusPx;
-        candidates.push_back(c);
+
+    // Local maxima of the sums (strictly above the neighbours before them in raster order, at
+    // least equal to those after: one pixel per plateau), by radial area.
+    for (auto& p : peaks_) p.clear();
+    const int w = sums_.cols;
+    const int h = sums_.rows;
+    for (const RowSpan& s : geometry_->spans()) {
+        if (s.y < 1 || s.y >= h - 1) continue;
+        const std::int32_t* up = sums_.ptr<std::int32_t>(s.y - 1);
+        const std::int32_t* mid = sums_.ptr<std::int32_t>(s.y);
+        const std::int32_t* down = sums_.ptr<std::int32_t>(s.y + 1);
+        const std::uint8_t* area = areaIndex_.ptr<std::uint8_t>(s.y);
+        for (int x = std::max(1, s.x0); x < std::min(w - 1, s.x1); ++x) {
+            const std::int32_t v = mid[x];
+            if (v < minRaw || area[x] == 255) continue;
+            if (v <= up[x - 1] || v <= up[x] || v <= up[x + 1] || v <= mid[x - 1]) continue;
+            if (v < mid[x + 1] || v < down[x - 1] || v < down[x] || v < down[x + 1]) continue;
+            peaks_[area[x]].push_back(Peak{v, x, s.y, 0});
+            ++stats_.localMaxima;
+        }
     }
+
+    // Per area, greedy non-maximum suppression from the strongest: a kept maximum suppresses
+    // weaker ones within suppressionRadii expected radii. Only the strongest few per area can
+    // matter (each kept one suppresses a handful of ridge maxima), so only they are sorted.
+    auto stronger = [](const Peak& a, const Peak& b) {
+        if (a.sum != b.sum) return a.sum > b.sum;
+        return a.y != b.y ? a.y < b.y : a.x < b.x;
+    };
+    auto suppresses = [&](const Peak& k, const Peak& p) {
+        const double r = options_.suppressionRadii * ball_->radiusAt(geometry_->distanceAt(k.x, k.y));
+        const double dx = k.x - p.x;
+        const double dy = k.y - p.y;
+        return dx * dx + dy * dy < r * r;
+    };
+    std::vector<Peak>& ranked = ranked_;  // at most areas x perArea
+    ranked.clear();
+    for (auto& list : peaks_) {
+        const std::size_t considered = std::min<std::size_t>(list.size(), std::size_t(perArea) * 16);
+        std::partial_sort(list.begin(), list.begin() + std::ptrdiff_t(considered), list.end(), stronger);
+        const std::size_t areaStart = ranked.size();
+        int rank = 0;
+        for (std::size_t i = 0; i < considered && rank < perArea; ++i) {
+            bool suppressed = false;
+            for (std::size_t k = areaStart; k < ranked.size() && !suppressed; ++k)
+                suppressed = suppresses(ranked[k], list[i]);
+            if (suppressed) continue;
+            Peak p = list[i];
+            p.rank = rank++;
+            ranked.push_back(p);
+        }
+    }
+    // Across areas (a ball on an area bound): the weaker of two close maxima goes.
+    std::sort(ranked.begin(), ranked.end(), stronger);
+    kept_.clear();
+    for (const Peak& r : ranked) {
+        bool suppressed = false;
+        for (std::size_t k = 0; k < kept_.size() && !suppressed; ++k) suppressed = suppresses(kept_[k], r);
+        if (!suppressed) kept_.push_back(r);
+    }
+    // Candidates: every area's strongest, then every area's second, ... up to the cap.
+    for (int rank = 0; rank < perArea; ++rank)
+        for (std::size_t i = 0; i < kept_.size(); ++i) {
+            if (kept_[i].rank != rank) continue;
+            if (int(best_.size()) >= cap) return;
+            best_.push_back(candidateAt(kept_[i].x, kept_[i].y, kept_[i].sum, CandidateSource::SpecificHough));
+        }
 }
 
 }  // namespace omnitune

@@ -10,6 +10,7 @@
 // outwards (the near side's edges see a bigger radius, the far side's a smaller one): 3 px at
 // 80 px from the centre with the default model. `radiusAtCentre = false` restores it.
 #include "core/BallCandidate.h"
+#include "core/BlobSeeds.h"
 
 #include <opencv2/core.hpp>
 
@@ -29,6 +30,29 @@ struct SpecificHoughOptions {
     std::vector<double> areaBounds = {70, 105, 140, 170, 205, 240};
     int minAccumulator = 1;         // a maximum whose 3x3 sum is below this is no candidate
     bool radiusAtCentre = true;     // vote with the radius at the centre's distance (see above)
+    // Local maxima kept per radial area, strongest first (thesis: 1). A kept maximum suppresses
+    // weaker ones closer than suppressionRadii expected radii, in its own and other areas.
+    int maximaPerArea = 3;
+    double suppressionRadii = 1.0;
+    // Candidates per frame at most (maxima and seeds): the areas' strongest first, then their
+    // second ones, and so on, so each area keeps its best. Bounds the validation time.
+    int maxCandidates = 16;
+    // Edge pixels that vote per frame at most; beyond it an even, deterministic subsample votes
+    // (0: no cap). A clean frame has 1-3 thousand; noise and dim speckle reach tens of thousands.
+    int maxEdgePixels = 6000;
+    // Seeds from connected non-green blobs whose area matches the ball's at their distance.
+    bool blobSeeds = false;
+    // Choose among valid candidates by the combined score (CandidateScore.h); false: the
+    // thesis' best circularity, then most votes.
+    bool rankByScore = true;
+};
+
+// What one process() call did with the edge pixels.
+struct HoughStats {
+    int edgePixels = 0;   // edge pixels in the processed ring
+    int votingPixels = 0; // of them, how many voted (fewer when maxEdgePixels was exceeded)
+    int localMaxima = 0;  // local maxima of the sums considered
+    int blobSeeds = 0;    // candidates added from blobs
 };
 
 class SpecificHough {
@@ -42,6 +66,8 @@ public:
     // Fills the vote accumulator, its 3x3 sums and appends the candidates (no allocation once
     // `candidates` has capacity).
     void process(const cv::Mat& edges, const cv::Mat& binary, std::vector<BallCandidate>& candidates);
+
+    const HoughStats& stats() const { return stats_; }
 
     // CV_16UC1 votes and CV_32SC1 3x3 sums of the last process() call.
     const cv::Mat& accumulator() const { return accumulator_; }
@@ -57,6 +83,15 @@ private:
     // the pixel and `across` it, px.
     struct LocusPoint { float along; float across; };
 
+    // A local maximum of the sums.
+    struct Peak { std::int32_t sum; int x; int y; int rank; };
+
+    void vote(const cv::Mat& edges, const cv::Mat& binary);
+    void sum3x3();
+    // Fills best_ with at most `cap` kept maxima, in the order they become candidates.
+    void findMaxima(int cap);
+    BallCandidate candidateAt(int x, int y, std::int32_t sum, CandidateSource source) const;
+
     SpecificHoughOptions options_;
     const Geometry* geometry_ = nullptr;
     const BallModel* ball_ = nullptr;
@@ -66,7 +101,13 @@ private:
     cv::Mat accumulator_;
     cv::Mat sums_;
     std::vector<std::int32_t> rowSums_;
+    std::vector<std::vector<Peak>> peaks_;  // by area
+    std::vector<Peak> ranked_;
+    std::vector<Peak> kept_;
     std::vector<BallCandidate> best_;
+    HoughStats stats_;
+    double voteScale_ = 1.0;  // edge pixels / voting pixels
+    BlobSeeds blobs_;
 };
 
 }  // namespace omnitune
