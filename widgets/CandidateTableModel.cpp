@@ -124,12 +124,12 @@ QVariant CandidateTableModel::display(const BallCandidate& c, int column) const
     const bool specific = c.source == CandidateSource::SpecificHough;
     switch (column) {
     case AreaColumn: return c.area >= 0 ? QString::number(c.area + 1) : QStringLiteral("-");
-    case SourceColumn: return specific ? QStringLiteral("specific") : QStringLiteral("opencv");
+    case SourceColumn: return QString::fromUtf8(candidateSourceName(c.source).data(), int(candidateSourceName(c.source).size()));
     case XColumn: return QString::number(c.x);
     case YColumn: return QString::number(c.y);
     case RadiusColumn: return number(c.radiusPx, 1);
     case DistanceColumn: return number(c.distancePx, 1);
-    case AccumulatorColumn: return specific ? number(c.accumulator, 0) : QStringLiteral("-");
+    case AccumulatorColumn: return specific ? number(c.accumulator, 0) : QStringLiteral("-");  // blobs and circles: no votes
     case NonGreenColumn: return number(c.scores.nonGreenPct, 1);
     case NonBlackColumn: return number(c.scores.nonBlackPct, 1);
     case CircularityColumn: return number(c.scores.circularityPct, 1);

@@ -51,7 +51,7 @@ std::string detectionCsvRow(int frame, const PipelineResult& r)
     std::string row = buf;
     if (const BallCandidate* c = decisiveCandidate(r)) {
         std::snprintf(buf, sizeof buf, ",%.1f,%.1f,%.1f,%s,%s", c->scores.nonGreenPct, c->scores.nonBlackPct,
-                      c->scores.circularityPct, c->source == CandidateSource::SpecificHough ? "specific" : "opencv",
+                      c->scores.circularityPct, std::string(candidateSourceName(c->source)).c_str(),
                       csvField(std::string(rejectReasonName(c->rejected))).c_str());
         row += buf;
     } else {
