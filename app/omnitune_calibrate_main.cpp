@@ -183,6 +183,51 @@ int runRim(const CommandLine& cl, const std::string& out)
     return save(*config, out);
 }
 
+// For fits that judge pixels of the config's geometry (colours, mask --auto): the config and
+// --frames frames of --input (spread over it), which must have the geometry's size.
+struct GeometryFrames {
+    Config config;
+    FitFrames frames;
+    std::string source;  // the source's description, for the report
+};
+
+std::optional<GeometryFrames> framesForGeometry(const CommandLine& cl, int defaultCount, const std::string& needsWhat,
+                                                std::string& error)
+{
+    int frameCount = defaultCount;
+    if (auto f = cl.value("frames")) {
+        const auto v = parseInt(*f);
+        if (!v || *v < 1) {
+            error = "--frames must be a positive whole number, not '" + *f + "'";
+            return std::nullopt;
+        }
+        frameCount = *v;
+    }
+    const std::string input = *cl.value("input");
+    auto opened = openFrameSource(input);
+    if (!opened.ok()) {
+        error = opened.error;
+        return std::nullopt;
+    }
+    for (const auto& w : opened.warnings) std::cerr << "warning: " << w << "\n";
+    auto config = startingConfig(cl, false, needsWhat, error);
+    if (!config) return std::nullopt;
+    GeometryFrames out{*config, readFitFrames(*opened.source, frameCount), opened.source->description()};
+    for (const auto& w : out.frames.warnings) std::cerr << "warning: " << w << "\n";
+    if (!out.frames.ok()) {
+        error = out.frames.error->toString();
+        return std::nullopt;
+    }
+    const cv::Size size = out.frames.images.front().size();
+    const cv::Size geometrySize(out.config.geometry.imageWidth, out.config.geometry.imageHeight);
+    if (size != geometrySize) {
+        error = "the config's geometry is for " + sizeText(geometrySize) + " frames but " + input + " gives " +
+                sizeText(size) + " frames: run 'omnitune-calibrate rim' on it first";
+        return std::nullopt;
+    }
+    return out;
+}
+
 std::string hsvText(const HsvRange& r)
 {
     return "H " + std::to_string(r.hMin) + ".." + std::to_string(r.hMax) + "  S " + std::to_string(r.sMin) + ".." +
@@ -192,27 +237,11 @@ std::string hsvText(const HsvRange& r)
 int runColours(const CommandLine& cl, const std::string& out)
 {
     if (!cl.has("input")) return fail("colours needs --input (see --help)");
-    const std::string input = *cl.value("input");
-    int frameCount = 8;
-    if (auto f = cl.value("frames")) {
-        const auto v = parseInt(*f);
-        if (!v || *v < 1) return fail("--frames must be a positive whole number, not '" + *f + "'");
-        frameCount = *v;
-    }
-    auto opened = openFrameSource(input);
-    if (!opened.ok()) return fail(opened.error);
-    for (const auto& w : opened.warnings) std::cerr << "warning: " << w << "\n";
     std::string error;
-    auto config = startingConfig(cl, false, "colours samples the used area of the config's geometry", error);
-    if (!config) return fail(error);
-    FitFrames frames = readFitFrames(*opened.source, frameCount);
-    for (const auto& w : frames.warnings) std::cerr << "warning: " << w << "\n";
-    if (!frames.ok()) return fail(frames.error->toString());
-    const cv::Size size = frames.images.front().size();
-    const cv::Size geometrySize(config->geometry.imageWidth, config->geometry.imageHeight);
-    if (size != geometrySize)
-        return fail("the config's geometry is for " + sizeText(geometrySize) + " frames but " + input + " gives " +
-                    sizeText(size) + " frames: run 'omnitune-calibrate rim' on it first");
+    auto in = framesForGeometry(cl, 8, "colours samples the used area of the config's geometry", error);
+    if (!in) return fail(error);
+    Config* config = &in->config;
+    const FitFrames& frames = in->frames;
     const auto problems = checkConfig(*config);
     if (!problems.empty()) return fail(problems.front().toString());
 
@@ -220,7 +249,7 @@ int runColours(const CommandLine& cl, const std::string& out)
     const AutoColourResult r = autoColour(frames.images, geometry, config->colors);
     if (!r.ok()) return fail(*r.error);
     const auto range = [&](const ColorLutOptions& c, ColorClass k) { return hsvText(c.ranges[std::size_t(k)]); };
-    std::cout << "colours: " << frames.images.size() << " frame(s) of " << opened.source->description() << "\n"
+    std::cout << "colours: " << frames.images.size() << " frame(s) of " << in->source << "\n"
               << "  carpet   hue " << r.carpetHue << ", median S " << r.carpetS << ", median V " << r.carpetV << ", "
               << fixedText(r.carpetPct, 1) << " % of the used area\n"
               << "  green    " << range(r.colors, ColorClass::Green) << "  (was " << range(config->colors, ColorClass::Green)
@@ -392,32 +421,17 @@ int runMask(const CommandLine& cl, const std::string& out)
     if (cl.has("import")) return runMaskImport(cl, out);
     if (!cl.has("auto")) return fail("mask needs --auto (from frames) or --import FILE (a mask made elsewhere)");
     if (!cl.has("input")) return fail("mask needs --input: a session or video in which the robot drives or turns");
-    int frameCount = 16;
-    if (auto f = cl.value("frames")) {
-        const auto v = parseInt(*f);
-        if (!v || *v < 1) return fail("--frames must be a positive whole number, not '" + *f + "'");
-        frameCount = *v;
-    }
-    auto opened = openFrameSource(*cl.value("input"));
-    if (!opened.ok()) return fail(opened.error);
-    for (const auto& w : opened.warnings) std::cerr << "warning: " << w << "\n";
     std::string error;
-    auto config = startingConfig(cl, false, "mask --auto judges pixels inside the mirror ring", error);
-    if (!config) return fail(error);
-    FitFrames frames = readFitFrames(*opened.source, frameCount);
-    for (const auto& w : frames.warnings) std::cerr << "warning: " << w << "\n";
-    if (!frames.ok()) return fail(frames.error->toString());
-    const cv::Size size = frames.images.front().size();
-    const cv::Size geometrySize(config->geometry.imageWidth, config->geometry.imageHeight);
-    if (size != geometrySize)
-        return fail("the config's geometry is for " + sizeText(geometrySize) + " frames but the input holds " +
-                    sizeText(size) + " frames: run 'omnitune-calibrate rim' on it first");
+    auto in = framesForGeometry(cl, 16, "mask --auto judges pixels inside the mirror ring", error);
+    if (!in) return fail(error);
+    Config* config = &in->config;
+    const FitFrames& frames = in->frames;
 
     StderrProgress progress("omnitune-calibrate mask");
     const AutoMaskResult mask = autoMask(frames.images, config->geometry, ColorLut(config->colors), {}, &progress);
     if (!mask.ok()) return fail(mask.error->toString());
     if (config->geometry.maskFile.empty()) config->geometry.maskFile = "mask.png";
-    std::cout << "mask: " << mask.fit.frames << " frame(s) of " << opened.source->description() << "\n"
+    std::cout << "mask: " << mask.fit.frames << " frame(s) of " << in->source << "\n"
               << "  " << mask.fit.regions << " robot region(s), " << fixedText(100.0 * mask.fit.robotShare, 1)
               << " % of the mirror image; written as " << config->geometry.maskFile
               << " beside the config (white = process): check it in the window\n";

@@ -1,19 +1,15 @@
 #include "calib/config/ProvisionalGeometry.h"
 
+#include "calib/fit/FitText.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace omnitune {
 
 namespace {
 
-std::string px(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.1f", v);
-    return buf;
-}
+std::string px(double v) { return fixedText(v, 1); }
 
 }  // namespace
 
