@@ -76,8 +76,7 @@ private slots:
     void defaultsAdaptAtOnceAndSetUpFits()
     {
         MainWindow window;
-        window.cameraSetup()->rimFrames = 6;
-        window.cameraSetup()->maskFrames = 8;
+        window.cameraSetup()->frameCount = 8;
         window.show();
         QVERIFY(window.openSource(camera()));
         QVERIFY2(waitForProcessed(window, {480, 480}), "the 480x480 frames were not processed under a provisional geometry");

@@ -93,7 +93,8 @@ void CameraSetup::setUp()
         report(tr("Cannot read %1: %2").arg(sourcePath_, QString::fromStdString(opened.error)), false);
         return;
     }
-    FitFrames frames = readFitFrames(*opened.source, rimFrames);
+    // Read once: the rim averages them, the body and the mask need the field to move between them.
+    FitFrames frames = readFitFrames(*opened.source, frameCount);
     if (!frames.ok()) {
         report(tr("No frames for the fit: %1").arg(QString::fromStdString(frames.error->toString())), false);
         return;
@@ -115,11 +116,7 @@ void CameraSetup::setUp()
                  .arg(r.rmsPx, 0, 'f', 2).arg(r.coverageDeg, 0, 'f', 0).arg(g.outerRadius, 0, 'f', 1);
     lines << tr("robot body: inner radius %1 px").arg(g.innerRadius, 0, 'f', 1);
 
-    // The mask from more frames, spread over the source: the field must move under the robot.
-    FitFrames maskInput = readFitFrames(*opened.source, maskFrames);
-    const AutoMaskResult mask = maskInput.ok()
-                                    ? autoMask(maskInput.images, g, ColorLut(mirror.config.colors))
-                                    : AutoMaskResult{{}, maskInput.error};
+    const AutoMaskResult mask = autoMask(frames.images, g, ColorLut(mirror.config.colors));
     QString maskText;
     if (mask.ok()) {
         Config withMask = doc_->config();

@@ -32,8 +32,7 @@ public:
     // A frame of `frameSize` could not be processed because the config is for another size.
     void frameSizeMismatch(cv::Size frameSize);
 
-    int maskFrames = 16;  // frames the auto-mask reads (tests use fewer)
-    int rimFrames = 8;    // frames the rim and body fit reads
+    int frameCount = 16;  // frames read once for the rim, body and mask fits (tests use fewer)
 
 public slots:
     // Provisional geometry for the frames' size (calib/config/ProvisionalGeometry.h).

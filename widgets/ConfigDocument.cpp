@@ -80,9 +80,12 @@ void ConfigDocument::updateDirty()
     for (const ConfigKey& k : configSchema())
         if (!(k.get(config_) == k.get(saved_))) dirty = true;
     // A new mask under the same file name is an edit too (Camera set up proposes one).
-    if (!dirty && (config_.mask.empty() != saved_.mask.empty() ||
-                   (!config_.mask.empty() && (config_.mask.size() != saved_.mask.size() ||
-                                              cv::countNonZero(config_.mask != saved_.mask) > 0))))
+    // The same buffer (a copy of the saved config) needs no pixel comparison: the common case
+    // on every threshold edit.
+    const cv::Mat& a = config_.mask;
+    const cv::Mat& b = saved_.mask;
+    if (!dirty && a.data != b.data &&
+        (a.empty() != b.empty() || (!a.empty() && (a.size() != b.size() || cv::countNonZero(a != b) > 0))))
         dirty = true;
     if (dirty == dirty_) return;
     dirty_ = dirty;
