@@ -1,0 +1,91 @@
+#pragma once
+// The simulated camera: the optics simulator's scene (calib/sim/optics/) rendered as radiance
+// and seen through a SensorModel whose exposure, gain, brightness and white balance act like a
+// real sensor's. A written setting takes effect 1 or 2 frames later (drawn from the seed), as
+// on an IIDC camera, so control loops meet the delay they meet at the venue. The robot moves
+// along a tour of `poses` places, `framesPerPose` frames each, so frames change. A white and a
+// black card sit on the robot's top plate (image centre), where the automatic calibration's
+// default reference regions look. Frames come as fast as they are grabbed; timestamps follow
+// the configured frame rate (no waiting). Deterministic: same options, same frames.
+#include "calib/camera/Camera.h"
+#include "calib/camera/SensorModel.h"
+#include "core/CameraSettings.h"
+
+#include <deque>
+#include <memory>
+#include <string>
+
+namespace omnitune {
+
+class OpticsRenderer;
+class CatadioptricCamera;
+
+// How badly set the camera starts: `good` (the config defaults), `dark` (short exposure, no
+// gain), `bright` (long exposure, high gain: whites clip), `tinted` (white balance far off).
+enum class SimulatedStart { Good, Dark, Bright, Tinted };
+std::string_view simulatedStartName(SimulatedStart s);
+std::optional<SimulatedStart> parseSimulatedStart(std::string_view name);
+// The settings a start state begins with.
+CameraSettings simulatedStartSettings(SimulatedStart s);
+
+struct SimulatedCameraOptions {
+    SimulatedStart start = SimulatedStart::Good;
+    unsigned seed = 1;
+    cv::Size image{640, 480};
+    int poses = 6;            // places along the tour
+    int framesPerPose = 15;   // frames the robot stays at each
+    double frameRate = 30.0;  // frames/s of the timestamps
+    cv::Rect whiteCard{300, 180, 16, 10};  // px: the white reference card on the top plate
+    cv::Rect blackCard{300, 290, 16, 10};  // px: the black reference card
+    SensorModel sensor;
+    bool settingsDelay = true;  // false: a write shows in the very next frame (for unit tests of other parts)
+};
+
+class SimulatedCamera : public Camera {
+public:
+    explicit SimulatedCamera(const SimulatedCameraOptions& options = {});
+    ~SimulatedCamera() override;
+
+    std::string description() const override;
+    std::optional<CameraError> open() override;
+    std::optional<CameraError> start() override;
+    std::optional<CameraError> grab(Frame& out) override;
+    void stop() override { started_ = false; }
+    void close() override;
+    bool isOpen() const override { return open_; }
+    bool isStarted() const override { return started_; }
+    cv::Size frameSize() const override { return open_ ? options_.image : cv::Size(); }
+    std::vector<CameraFeature> features() override;
+
+    // What the sensor applies now (the last frame's settings), unlike the registers features() reads.
+    const CameraSettings& effectiveSettings() const { return effective_; }
+    // Test hook: the next grab() fails as if the cable were pulled; later calls fail too until open().
+    void simulateUnplug() { unplugged_ = true; }
+
+protected:
+    std::optional<CameraError> writeFeature(CameraFeatureId id, int value) override;
+    std::optional<CameraError> writeAuto(CameraFeatureId id, bool on) override;
+
+private:
+    struct PendingWrite {
+        int effectiveAt = 0;  // frame index from which the value applies
+        CameraFeatureId id;
+        int value = 0;
+    };
+    const cv::Mat& radiance(int pose);
+
+    SimulatedCameraOptions options_;
+    std::unique_ptr<CatadioptricCamera> optics_;
+    std::unique_ptr<OpticsRenderer> renderer_;
+    std::vector<cv::Mat> radiance_;  // CV_32FC3 per pose, rendered on first use
+    CameraSettings registers_;       // what was last written
+    CameraSettings effective_;       // what the sensor applies
+    std::deque<PendingWrite> pending_;
+    cv::RNG delayRng_;
+    int next_ = 0;  // index of the next frame
+    bool open_ = false;
+    bool started_ = false;
+    bool unplugged_ = false;
+};
+
+}  // namespace omnitune
