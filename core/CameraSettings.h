@@ -7,6 +7,10 @@ namespace omnitune {
 
 struct CameraSettings {
     std::string model;           // free text, e.g. "PointGrey Flea2"; informational
+    // Which camera the window and omnitune-camera open: "dc1394", "dc1394:GUID", "v4l2",
+    // "v4l2:/dev/videoN", "simulated"; empty: the first camera found. The settings below are
+    // written to it when it opens.
+    std::string source;
     double frameRate = 30.0;     // frames/s
     int exposure = 300;          // IIDC EXPOSURE register value, 0..4095
     int whiteBalanceBlue = 500;  // IIDC WHITE_BALANCE U/B, 0..1023

@@ -3,6 +3,7 @@
 // numbers. Ranges, units and meanings live once in ConfigSchema; docs/config.md is made from it.
 #include "core/Algorithm.h"
 #include "core/BallModel.h"
+#include "core/CameraAutoOptions.h"
 #include "core/CameraSettings.h"
 #include "core/ColorLut.h"
 #include "core/DistanceMap.h"
@@ -19,6 +20,7 @@ namespace omnitune {
 
 struct Config {
     CameraSettings camera;
+    CameraAutoOptions cameraAuto;
     ColorLutOptions colors;
     GeometryOptions geometry;
     RadialSensorOptions sensors;

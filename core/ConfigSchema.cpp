@@ -75,6 +75,68 @@ std::vector<ConfigKey> buildSchema()
                        [](auto& c) -> auto& { return c.camera.gain; }));
     s.push_back(intKey("camera.brightness", "register", 0, 1023, false, "IIDC brightness (black level)",
                        [](auto& c) -> auto& { return c.camera.brightness; }));
+    s.push_back(textKey("camera.source",
+                        "Camera to open: dc1394, dc1394:GUID, v4l2, v4l2:/dev/videoN or simulated; empty: the first camera found. "
+                        "The settings above are written to it when it opens",
+                        [](auto& c) -> auto& { return c.camera.source; }));
+
+    // automatic camera calibration (ref. [31] of the thesis)
+    const auto autoInt = [&s](const char* key, const char* unit, int min, int max, const char* meaning, auto ref) {
+        s.push_back(intKey(std::string("camera_auto.") + key, unit, min, max, false, meaning, ref));
+    };
+    const auto autoDouble = [&s](const char* key, const char* unit, double min, double max, const char* meaning, auto ref) {
+        s.push_back(doubleKey(std::string("camera_auto.") + key, unit, min, max, false, meaning, ref));
+    };
+    autoInt("histogram_regions", "regions", 2, 16, "Regions of equal width the intensity histogram is cut into; the MSV is their mean index, 1..regions",
+            [](auto& c) -> auto& { return c.cameraAuto.histogramRegions; });
+    autoDouble("msv_target", "MSV", 1, 16, "Mean sample value exposure and gain aim for; the middle of the regions is neutral, lower is darker",
+               [](auto& c) -> auto& { return c.cameraAuto.msvTarget; });
+    autoDouble("msv_tolerance", "MSV", 0.01, 2, "Accepted distance of the MSV from its target; too small never settles in noise",
+               [](auto& c) -> auto& { return c.cameraAuto.msvTolerance; });
+    autoDouble("exposure_kp", "range/MSV", 0, 1, "Proportional gain of the exposure controller, in fractions of the exposure range per MSV",
+               [](auto& c) -> auto& { return c.cameraAuto.exposureKp; });
+    autoDouble("exposure_ki", "range/MSV", 0, 1, "Integral gain of the exposure controller per iteration; too high oscillates, too low is slow",
+               [](auto& c) -> auto& { return c.cameraAuto.exposureKi; });
+    autoDouble("gain_kp", "range/MSV", 0, 1, "Proportional gain of the gain controller, in fractions of the gain range per MSV",
+               [](auto& c) -> auto& { return c.cameraAuto.gainKp; });
+    autoDouble("gain_ki", "range/MSV", 0, 1, "Integral gain of the gain controller per iteration",
+               [](auto& c) -> auto& { return c.cameraAuto.gainKi; });
+    autoInt("exposure_max", "register", 0, 65535, "Exposure is never raised above this (a long exposure blurs a moving ball); gain takes over",
+            [](auto& c) -> auto& { return c.cameraAuto.exposureMax; });
+    autoInt("gain_min", "register", 0, 65535, "Gain is lowered to this before exposure is lowered",
+            [](auto& c) -> auto& { return c.cameraAuto.gainMin; });
+    autoInt("gain_max", "register", 0, 65535, "Gain is never raised above this (high gain adds noise that breaks edges)",
+            [](auto& c) -> auto& { return c.cameraAuto.gainMax; });
+    autoDouble("chroma_target", "0..255", 0, 255, "U and V of the white region for neutral white (8-bit YCbCr: grey is the middle of the range)",
+               [](auto& c) -> auto& { return c.cameraAuto.chromaTarget; });
+    autoDouble("chroma_tolerance", "0..255", 0.1, 64, "Accepted distance of the white region's U and V from the target",
+               [](auto& c) -> auto& { return c.cameraAuto.chromaTolerance; });
+    autoDouble("white_balance_kp", "range/level", 0, 1, "Proportional gain of the white-balance controllers (U/B from U, V/R from V)",
+               [](auto& c) -> auto& { return c.cameraAuto.whiteBalanceKp; });
+    autoDouble("white_balance_ki", "range/level", 0, 1, "Integral gain of the white-balance controllers per iteration",
+               [](auto& c) -> auto& { return c.cameraAuto.whiteBalanceKi; });
+    autoDouble("black_target", "0..255", 0, 255, "Mean grey level the black region should have; 0 clips the dark colours' noise",
+               [](auto& c) -> auto& { return c.cameraAuto.blackTarget; });
+    autoDouble("black_tolerance", "0..255", 0.1, 64, "Accepted distance of the black region's level from the target",
+               [](auto& c) -> auto& { return c.cameraAuto.blackTolerance; });
+    autoDouble("brightness_kp", "range/level", 0, 1, "Proportional gain of the brightness controller",
+               [](auto& c) -> auto& { return c.cameraAuto.brightnessKp; });
+    autoDouble("brightness_ki", "range/level", 0, 1, "Integral gain of the brightness controller per iteration",
+               [](auto& c) -> auto& { return c.cameraAuto.brightnessKi; });
+    autoInt("skip_frames", "frames", 0, 30, "Frames dropped after a write before measuring, so the new setting has taken effect",
+            [](auto& c) -> auto& { return c.cameraAuto.skipFrames; });
+    autoInt("max_iterations", "iterations", 1, 1000, "Iterations before the calibration gives up",
+            [](auto& c) -> auto& { return c.cameraAuto.maxIterations; });
+    autoInt("limit_iterations", "iterations", 1, 100, "Iterations a needed feature may sit at its limit before the calibration reports it cannot converge",
+            [](auto& c) -> auto& { return c.cameraAuto.limitIterations; });
+    autoInt("white_x", "px", 0, 4096, "White reference region (a white card on the robot), left", [](auto& c) -> auto& { return c.cameraAuto.whiteX; });
+    autoInt("white_y", "px", 0, 4096, "White reference region, top", [](auto& c) -> auto& { return c.cameraAuto.whiteY; });
+    autoInt("white_width", "px", 1, 4096, "White reference region, width", [](auto& c) -> auto& { return c.cameraAuto.whiteWidth; });
+    autoInt("white_height", "px", 1, 4096, "White reference region, height", [](auto& c) -> auto& { return c.cameraAuto.whiteHeight; });
+    autoInt("black_x", "px", 0, 4096, "Black reference region (a black card on the robot), left", [](auto& c) -> auto& { return c.cameraAuto.blackX; });
+    autoInt("black_y", "px", 0, 4096, "Black reference region, top", [](auto& c) -> auto& { return c.cameraAuto.blackY; });
+    autoInt("black_width", "px", 1, 4096, "Black reference region, width", [](auto& c) -> auto& { return c.cameraAuto.blackWidth; });
+    autoInt("black_height", "px", 1, 4096, "Black reference region, height", [](auto& c) -> auto& { return c.cameraAuto.blackHeight; });
 
     // colour classes
     s.push_back(intKey("colors.lut_bits", "bits", 4, 8, false,
@@ -535,6 +597,10 @@ std::string configSchemaMarkdown()
 {
     static const std::pair<const char*, const char*> sections[] = {
         {"camera", "Camera settings (IIDC features through libdc1394), in the camera's register units."},
+        {"camera_auto", "Automatic camera calibration (thesis ch. 4, ref. [31]; docs/cameras.md): exposure then gain "
+                        "bring the mean sample value (MSV) of the intensity histogram over the geometry's ring to its "
+                        "target, white balance makes the white region neutral, brightness brings the black region to "
+                        "its level. Controller gains are fractions of the feature's range per unit of error."},
         {"colors", "Colour classes as HSV ranges in OpenCV's 8-bit scale (H 0..179, S and V 0..255). The first class "
                    "in the order black, white, green, orange, cyan, magenta whose range holds a colour wins; "
                    "no match is `unknown`. A hue range with h_min above h_max wraps through 0 (red: 170..10)."},
