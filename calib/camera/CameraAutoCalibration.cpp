@@ -163,6 +163,11 @@ std::optional<CameraError> CameraAutoCalibration::step(CameraAutoIteration& out)
         if (n >= o.limitIterations && state_ == CameraAutoState::Running) fail(why);
     };
 
+    // "exposure 80" or "no exposure": for the reasons below.
+    const auto valueText = [&](CameraFeatureId id) {
+        const std::string name(cameraFeatureName(id));
+        return has(id) ? name + " " + std::to_string(std::lround(command_[id])) : "no " + name;
+    };
     // Exposure first, then gain: too dark raises exposure up to exposure_max, then gain; too
     // bright lowers gain down to gain_min, then exposure.
     const double e = o.msvTarget - m.msv;
@@ -177,11 +182,14 @@ std::optional<CameraError> CameraAutoCalibration::step(CameraAutoIteration& out)
         const bool moved = useExposure ? move(CameraFeatureId::Exposure, exposurePi_.update(e), std::nullopt, o.exposureMax)
                                        : move(CameraFeatureId::Gain, gainPi_.update(e), o.gainMin, o.gainMax);
         stuck(CameraFeatureId::Exposure, moved,
-              e > 0 ? "exposure and gain at their upper limits (exposure_max " + std::to_string(o.exposureMax) +
+              e > 0 ? "exposure and gain at their upper limits (" + valueText(CameraFeatureId::Exposure) +
+                          ", exposure_max " + std::to_string(o.exposureMax) + "; " + valueText(CameraFeatureId::Gain) +
                           ", gain_max " + std::to_string(o.gainMax) + ") and the image is still too dark: msv " +
                           fixed(m.msv, 2) + ", target " + fixed(o.msvTarget, 2)
-                    : "exposure and gain at their lower limits and the image is still too bright: msv " +
-                          fixed(m.msv, 2) + ", target " + fixed(o.msvTarget, 2));
+                    : "exposure and gain at their lower limits (" + valueText(CameraFeatureId::Exposure) + "; " +
+                          valueText(CameraFeatureId::Gain) + ", gain_min " + std::to_string(o.gainMin) +
+                          ") and the image is still too bright: msv " + fixed(m.msv, 2) + ", target " +
+                          fixed(o.msvTarget, 2));
     }
     // White balance: U below neutral wants more blue, V above neutral less red.
     if (has(CameraFeatureId::WhiteBalanceBlue) && std::abs(m.u - o.chromaTarget) > o.chromaTolerance)
