@@ -9,6 +9,8 @@
 #include "widgets/GeometryEditor.h"
 #include "calib/source/FrameSourceFactory.h"
 #include "widgets/MarkedSlider.h"
+#include "widgets/MaskEditor.h"
+#include "widgets/MaskImportDialog.h"
 #include "widgets/NoticeBar.h"
 #include "widgets/OverlayLegend.h"
 #include "widgets/PipelineView.h"
@@ -144,7 +146,10 @@ MainWindow::MainWindow(QWidget* parent)
     // so arrows, Space and T act on frames again.
     auto* escape = new QAction(this);
     escape->setShortcut(Qt::Key_Escape);
-    connect(escape, &QAction::triggered, view_, [this] { view_->setFocus(Qt::ShortcutFocusReason); });
+    connect(escape, &QAction::triggered, view_, [this] {
+        if (maskEditor_->isEditing()) maskEditor_->escape();  // an open polygon first, then the mode
+        view_->setFocus(Qt::ShortcutFocusReason);
+    });
     addAction(escape);
     recovery_ = new RecoveryFile(&doc_, this);
     connect(recovery_, &RecoveryFile::writeFailed, this, [this](const QString& why) { notices_->add(tr("Crash recovery:"), {why}); });
@@ -252,6 +257,23 @@ void MainWindow::buildMenus()
     connect(marker_, &TruthMarker::markingChanged, this, [this](bool on) {
         if (on) geometryEditor_->setEditing(false);
     });
+    maskEditor_ = new MaskEditor(&doc_, view_, this);
+    maskEditor_->fillMenu(camera);
+    addToolBar(Qt::TopToolBarArea, maskEditor_->toolBar());
+    connect(maskEditor_, &MaskEditor::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    connect(maskEditor_, &MaskEditor::editingChanged, this, [this](bool on) {
+        if (!on) return;
+        geometryEditor_->setEditing(false);
+        if (marker_->isMarking()) marker_->setMarking(false);
+    });
+    camera->addAction(tr("&Import mask..."), this, [this] {
+        MaskImportDialog::start(&doc_, lastRun_ ? lastRun_->result.stages.acquired : cv::Mat(), this);
+    })->setObjectName("importMask");
+    const auto leaveMask = [this](bool on) {
+        if (on) maskEditor_->setEditing(false);
+    };
+    connect(geometryEditor_, &GeometryEditor::editingChanged, maskEditor_, leaveMask);
+    connect(marker_, &TruthMarker::markingChanged, maskEditor_, leaveMask);
     camera->addSeparator();
     setUpCameraAction_ = camera->addAction(tr("&Set up this camera (centre, rim, body, mask)"), cameraSetup_, &CameraSetup::setUp);
     setUpCameraAction_->setObjectName("setUpCamera");
@@ -314,6 +336,7 @@ void MainWindow::clearForNewSource()
     // table and labels are emptied now, and runs of the old source still in flight are dropped.
     ++sourceTag_;
     geometryEditor_->setEditing(false);  // the marker gives up the left button too (TruthMarker::reset)
+    maskEditor_->setEditing(false);
     source_.reset();  // a config loaded (or restored) before the new source is set runs nothing old
     lastRun_.reset();
     marker_->setRun(nullptr);

@@ -21,6 +21,7 @@ class CandidateTableModel;
 class ConfigFiles;
 class FrameNavigator;
 class GeometryEditor;
+class MaskEditor;
 class NoticeBar;
 class PipelineView;
 class SessionSweepPanel;
@@ -53,6 +54,7 @@ public:
     RecoveryFile* recovery() const { return recovery_; }
     CameraSetup* cameraSetup() const { return cameraSetup_; }
     GeometryEditor* geometryEditor() const { return geometryEditor_; }
+    MaskEditor* maskEditor() const { return maskEditor_; }
     CandidateTableModel* candidates() const { return candidates_; }
     std::shared_ptr<const PipelineRun> lastRun() const { return lastRun_; }
     bool isProcessing() const;
@@ -101,6 +103,7 @@ private:
     CameraSetup* cameraSetup_ = nullptr;  // a camera the config does not fit yet
     QAction* setUpCameraAction_ = nullptr;
     GeometryEditor* geometryEditor_ = nullptr;  // drag centre and radii, nudge the centre
+    MaskEditor* maskEditor_ = nullptr;          // paint the robot mask on the panes
     QLabel* resultLabel_;
     QLabel* truthLabel_;
     QLabel* timingLabel_;

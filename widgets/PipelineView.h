@@ -46,6 +46,8 @@ public:
     // Geometry editing: the left button drags the centre and the radii (GeometryEditor)
     // instead of marking or panning; turning it on turns marking off and the other way round.
     void setEditingGeometry(bool on);
+    // Mask editing: the left button paints the mask (MaskEditor), the same way.
+    void setEditingMask(bool on);
     double paneScale() const { return panes_[0]->scale(); }  // widget px per image px
 
 signals:
@@ -57,6 +59,9 @@ signals:
     void geometryPressed(QPointF imagePos);
     void geometryDragged(QPointF imagePos);
     void geometryReleased(QPointF imagePos);
+    void maskPressed(QPointF imagePos);
+    void maskDragged(QPointF imagePos);
+    void maskReleased(QPointF imagePos);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -75,6 +80,7 @@ private:
     QWidget* side_ = nullptr;
     int enlarged_ = -1;
     bool editingGeometry_ = false;
+    bool editingMask_ = false;
 };
 
 }  // namespace omnitune
