@@ -301,6 +301,8 @@ private slots:
         // White means process (the default): the black field is what would be left out.
         QVERIFY(dialog->preview().pixel(field) != frame.pixel(field));
         QCOMPARE(dialog->preview().pixel(onRod), frame.pixel(onRod));
+        if (qEnvironmentVariableIsSet("OMNITUNE_SCREENSHOT_DIR"))  // to look at the dialog
+            dialog->grab().save(qEnvironmentVariable("OMNITUNE_SCREENSHOT_DIR") + "/mask-import.png");
         QVERIFY2(dialog->findChild<QLabel*>("maskSummary")->text().contains("leaves most of the field out"),
                  qPrintable(dialog->findChild<QLabel*>("maskSummary")->text()));
         // Black means process: now the rod is tinted and the field shows as it is.

@@ -40,6 +40,7 @@ MaskImportDialog::MaskImportDialog(ConfigDocument* doc, const cv::Mat& frame, QW
 {
     setWindowTitle(tr("Import mask"));
     setObjectName(QStringLiteral("maskImport"));
+    setMinimumWidth(kPreviewSide + 120);
     auto* layout = new QVBoxLayout(this);
     auto* fileRow = new QHBoxLayout;
     fileRow->addWidget(new QLabel(tr("Mask image:"), this));
@@ -65,6 +66,7 @@ MaskImportDialog::MaskImportDialog(ConfigDocument* doc, const cv::Mat& frame, QW
     previewLabel_->setStyleSheet(QStringLiteral("background: #1e1e1e; color: #aaa"));
     layout->addWidget(previewLabel_, 1);
     summary_->setWordWrap(true);
+    summary_->setMinimumHeight(summary_->fontMetrics().lineSpacing() * 4 + 4);  // the warning fits unclipped
     summary_->setObjectName(QStringLiteral("maskSummary"));
     layout->addWidget(summary_);
     buttons_->button(QDialogButtonBox::Ok)->setText(tr("Use this mask"));
