@@ -11,6 +11,7 @@
 #include "widgets/ImageView.h"
 #include "widgets/MaskEditor.h"
 #include "widgets/MaskImportDialog.h"
+#include "widgets/PaneEditors.h"
 #include "widgets/PipelineView.h"
 #include "widgets/PipelineRunner.h"
 #include "WindowTestSupport.h"
@@ -66,11 +67,7 @@ private slots:
         session_ = dir_.filePath(QStringLiteral("demo%1").arg(++count_));
         QVERIFY(copyDemo(session_));
         window_ = std::make_unique<MainWindow>();
-        window_->resize(1300, 750);
-        window_->show();
-        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
-        window_->activateWindow();  // the keys are window shortcuts (matters under a real X server)
-        QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+        QVERIFY(showActive(*window_));
         QVERIFY(window_->openSource(session_));
         QVERIFY(waitForFrame(*window_, 0));
         QTest::keyClick(window_.get(), Qt::Key_M);
@@ -348,7 +345,7 @@ private slots:
     }
 
 private:
-    MaskEditor* editor() const { return window_->maskEditor(); }
+    MaskEditor* editor() const { return window_->paneEditors()->mask(); }
     ImageView* acquired() const { return window_->pipelineView()->pane(PipelineView::Acquired); }
 
     QTemporaryDir dir_;

@@ -3,6 +3,7 @@
 #include "calib/mask/MaskPaint.h"
 #include "widgets/ConfigDocument.h"
 #include "widgets/ImageView.h"
+#include "widgets/PaneInput.h"
 #include "widgets/PaneSketch.h"
 #include "widgets/PipelineView.h"
 
@@ -32,9 +33,7 @@ cv::Point2d toCv(QPointF p) { return {p.x(), p.y()}; }
 MaskEditor::MaskEditor(ConfigDocument* doc, PipelineView* view, QObject* parent)
     : QObject(parent), doc_(doc), view_(view)
 {
-    connect(view_, &PipelineView::maskPressed, this, &MaskEditor::onPressed);
-    connect(view_, &PipelineView::maskDragged, this, &MaskEditor::onDragged);
-    connect(view_, &PipelineView::maskReleased, this, &MaskEditor::onReleased);
+    connectPaneInput(view_, this, &MaskEditor::onPressed, &MaskEditor::onDragged, &MaskEditor::onReleased);
     connect(view_, &PipelineView::hovered, this, [this](QPointF p) {
         cursor_ = p;
         if (editing_) updatePreviews();
@@ -172,7 +171,10 @@ void MaskEditor::setEditing(bool on)
     stroking_ = false;
     polygon_.clear();
     emit editingChanged(on);  // truth marking and the geometry editor give the left button up first
-    view_->setEditingMask(on);
+    if (on)
+        view_->setPaneEditor(this);
+    else if (view_->paneEditor() == this)
+        view_->setPaneEditor(nullptr);
     if (modeAction_) modeAction_->setChecked(on);
     for (QAction* a : editingActions_) a->setEnabled(on);
     toolBar_->setVisible(on);

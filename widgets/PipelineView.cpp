@@ -21,17 +21,17 @@ PipelineView::PipelineView(QWidget* parent) : QWidget(parent), grid_(new QGridLa
         connect(view, &ImageView::hovered, this, &PipelineView::hovered);
         connect(view, &ImageView::left, this, &PipelineView::left);
         connect(view, &ImageView::doubleClicked, this, [this, i] { toggleEnlarged(i); });
-        // The left button is captured for truth marking, the geometry or the mask editor: one at a time.
+        // The left button is captured for truth marking, the geometry or another editor: one at a time.
         connect(view, &ImageView::markPressed, this, [this](QPointF p) {
-            if (editingMask_) emit maskPressed(p);
+            if (paneEditor_) emit editorPressed(p);
             else if (editingGeometry_) emit geometryPressed(p); else emit markPressed(p);
         });
         connect(view, &ImageView::markDragged, this, [this](QPointF p) {
-            if (editingMask_) emit maskDragged(p);
+            if (paneEditor_) emit editorDragged(p);
             else if (editingGeometry_) emit geometryDragged(p); else emit markDragged(p);
         });
         connect(view, &ImageView::markReleased, this, [this](QPointF p) {
-            if (editingMask_) emit maskReleased(p);
+            if (paneEditor_) emit editorReleased(p);
             else if (editingGeometry_) emit geometryReleased(p); else emit markReleased(p);
         });
         // A click on a pane takes the keyboard back from an editor: arrows, Space, T act again.
@@ -93,7 +93,7 @@ void PipelineView::setTruth(const TruthOverlay& truth)
 void PipelineView::setMarking(bool on)
 {
     editingGeometry_ = false;
-    editingMask_ = false;
+    paneEditor_ = nullptr;
     for (ImageView* v : panes_) v->setMarking(on);
 }
 
@@ -101,14 +101,14 @@ void PipelineView::setEditingGeometry(bool on)
 {
     for (ImageView* v : panes_) v->setMarking(on);
     editingGeometry_ = on;
-    if (on) editingMask_ = false;
+    if (on) paneEditor_ = nullptr;
 }
 
-void PipelineView::setEditingMask(bool on)
+void PipelineView::setPaneEditor(const QObject* editor)
 {
-    for (ImageView* v : panes_) v->setMarking(on);
-    editingMask_ = on;
-    if (on) editingGeometry_ = false;
+    for (ImageView* v : panes_) v->setMarking(editor != nullptr);
+    paneEditor_ = editor;
+    if (editor) editingGeometry_ = false;
 }
 
 void PipelineView::showRun(const PipelineRun& run, std::shared_ptr<const OverlayData> overlay)
