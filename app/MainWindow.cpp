@@ -9,10 +9,13 @@
 #include "widgets/GeometryEditor.h"
 #include "calib/source/FrameSourceFactory.h"
 #include "widgets/MarkedSlider.h"
+#include "widgets/MaskEditor.h"
+#include "widgets/PaneEditors.h"
 #include "widgets/NoticeBar.h"
 #include "widgets/OverlayLegend.h"
 #include "widgets/PipelineView.h"
 #include "widgets/PixelInspector.h"
+#include "widgets/RayStrip.h"
 #include "widgets/RecentFiles.h"
 #include "widgets/ScreenFit.h"
 #include "widgets/RecoveryFile.h"
@@ -66,6 +69,8 @@ MainWindow::MainWindow(QWidget* parent)
     cameraSetup_ = new CameraSetup(&doc_, configFiles_, notices_, setupBar, this);
     layout->addWidget(setupBar);
     layout->addWidget(view_, 1);
+    rayStrip_ = new RayStrip(this);  // the classes along a radial sensor ray, while they are edited
+    layout->addWidget(rayStrip_);
     auto* resultRow = new QHBoxLayout;
     resultRow->addWidget(resultLabel_, 1);
     truthLabel_->setObjectName("truth");
@@ -144,7 +149,10 @@ MainWindow::MainWindow(QWidget* parent)
     // so arrows, Space and T act on frames again.
     auto* escape = new QAction(this);
     escape->setShortcut(Qt::Key_Escape);
-    connect(escape, &QAction::triggered, view_, [this] { view_->setFocus(Qt::ShortcutFocusReason); });
+    connect(escape, &QAction::triggered, view_, [this] {
+        paneEditors_->escape();  // an open polygon first, then the mask or sensor editing
+        view_->setFocus(Qt::ShortcutFocusReason);
+    });
     addAction(escape);
     recovery_ = new RecoveryFile(&doc_, this);
     connect(recovery_, &RecoveryFile::writeFailed, this, [this](const QString& why) { notices_->add(tr("Crash recovery:"), {why}); });
@@ -252,6 +260,11 @@ void MainWindow::buildMenus()
     connect(marker_, &TruthMarker::markingChanged, this, [this](bool on) {
         if (on) geometryEditor_->setEditing(false);
     });
+    // The mask and the radial sensors; one editor holds the left button at a time.
+    paneEditors_ = new PaneEditors(&doc_, view_, geometryEditor_, marker_, rayStrip_, this);
+    paneEditors_->fillMenu(camera);
+    addToolBar(Qt::TopToolBarArea, paneEditors_->mask()->toolBar());
+    connect(paneEditors_, &PaneEditors::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     camera->addSeparator();
     setUpCameraAction_ = camera->addAction(tr("&Set up this camera (centre, rim, body, mask)"), cameraSetup_, &CameraSetup::setUp);
     setUpCameraAction_->setObjectName("setUpCamera");
@@ -314,6 +327,7 @@ void MainWindow::clearForNewSource()
     // table and labels are emptied now, and runs of the old source still in flight are dropped.
     ++sourceTag_;
     geometryEditor_->setEditing(false);  // the marker gives up the left button too (TruthMarker::reset)
+    paneEditors_->stopEditing();
     source_.reset();  // a config loaded (or restored) before the new source is set runs nothing old
     lastRun_.reset();
     marker_->setRun(nullptr);
@@ -405,6 +419,7 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
     if (run->sourceTag != sourceTag_) return;  // a frame of the source open before this one
     lastRun_ = run;
     marker_->setRun(run);  // the truth drawn is this frame's, whatever the slider asks for next
+    paneEditors_->setRun(run);
     if (!run->error.isEmpty() || !run->result.ok()) {
         // Shown all the same (when it could be read), with the reason on it: never another frame.
         const QString why = run->error.isEmpty() ? QString::fromStdString(run->result.error) : run->error;

@@ -21,11 +21,13 @@ class CandidateTableModel;
 class ConfigFiles;
 class FrameNavigator;
 class GeometryEditor;
+class PaneEditors;
 class NoticeBar;
 class PipelineView;
 class SessionSweepPanel;
 struct SweepResult;
 class ThresholdPanel;
+class RayStrip;
 class RecentFiles;
 class RecoveryFile;
 class TruthMarker;
@@ -53,6 +55,7 @@ public:
     RecoveryFile* recovery() const { return recovery_; }
     CameraSetup* cameraSetup() const { return cameraSetup_; }
     GeometryEditor* geometryEditor() const { return geometryEditor_; }
+    PaneEditors* paneEditors() const { return paneEditors_; }
     CandidateTableModel* candidates() const { return candidates_; }
     std::shared_ptr<const PipelineRun> lastRun() const { return lastRun_; }
     bool isProcessing() const;
@@ -101,6 +104,8 @@ private:
     CameraSetup* cameraSetup_ = nullptr;  // a camera the config does not fit yet
     QAction* setUpCameraAction_ = nullptr;
     GeometryEditor* geometryEditor_ = nullptr;  // drag centre and radii, nudge the centre
+    PaneEditors* paneEditors_ = nullptr;  // the mask and the radial sensors on the panes
+    RayStrip* rayStrip_ = nullptr;        // the classes along the selected sensor ray
     QLabel* resultLabel_;
     QLabel* truthLabel_;
     QLabel* timingLabel_;

@@ -195,6 +195,9 @@ std::vector<ConfigKey> buildSchema()
                           [](auto& c) -> auto& { return c.sensors.innerRadius; }));
     s.push_back(doubleKey("sensors.outer_radius", "px", 1, 2048, false, "Where each sensor ray ends",
                           [](auto& c) -> auto& { return c.sensors.outerRadius; }));
+    s.push_back(doubleKey("sensors.angle_offset", "deg", 0, 360, false,
+                          "Direction of the first ray, counter-clockwise from the image's +x axis; the others follow evenly",
+                          [](auto& c) -> auto& { return c.sensors.angleOffsetDeg; }));
 
     // distance map
     s.push_back(listKey("distance_map.pixel_radii", "px", 0, 4096, false, "Calibration points: image distance from the centre, strictly increasing",

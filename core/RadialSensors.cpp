@@ -27,10 +27,12 @@ RadialSensors::RadialSensors(const RadialSensorOptions& options, const Geometry&
     }
 }
 
-double RadialSensors::angle(int ray) const
+double radialSensorAngle(const RadialSensorOptions& options, int ray)
 {
-    return 2.0 * M_PI * ray / std::max(options_.count, 1);
+    return options.angleOffsetDeg * M_PI / 180.0 + 2.0 * M_PI * ray / std::max(options.count, 1);
 }
+
+double RadialSensors::angle(int ray) const { return radialSensorAngle(options_, ray); }
 
 void RadialSensors::runs(const cv::Mat& classes, int ray, std::vector<ClassRun>& out) const
 {

@@ -14,7 +14,12 @@ struct RadialSensorOptions {
     int count = 90;             // rays, evenly spaced over 360 degrees, 1..720
     double innerRadius = 50.0;  // px from the centre where a ray starts
     double outerRadius = 240.0; // px where it ends
+    double angleOffsetDeg = 0.0;  // direction of ray 0, degrees counter-clockwise from image +x, 0..360
 };
+
+// Direction of `ray` (radians, 0 = +x, counter-clockwise in the image): the offset, then
+// evenly spaced. The robot's sensors and the window's overlay both use this.
+double radialSensorAngle(const RadialSensorOptions& options, int ray);
 
 struct SensorPixel {
     int x = 0;

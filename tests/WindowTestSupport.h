@@ -49,6 +49,17 @@ inline void answerNextMessageBox(QMessageBox::StandardButton button, QString* te
     });
 }
 
+// Shows the window at a laptop's size and makes it active, so that its shortcuts reach it
+// (under a real X server too, where a window that is not active gets no key events).
+inline bool showActive(MainWindow& window)
+{
+    window.resize(1300, 750);
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window)) return false;
+    window.activateWindow();
+    return QTest::qWaitForWindowActive(&window);
+}
+
 // Waits until the window shows a run of `frame` and nothing is pending (about 10 s at most).
 inline bool waitForFrame(MainWindow& window, int frame)
 {

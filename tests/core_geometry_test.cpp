@@ -130,6 +130,23 @@ private slots:
         QVERIFY(sensors.pixels(2).back().y < 10);
     }
 
+    void sensorAngleOffsetTurnsEveryRay()
+    {
+        const Geometry geo(smallRing(), cv::Mat());
+        RadialSensorOptions o;
+        o.count = 8;
+        o.innerRadius = 10;
+        o.outerRadius = 35;
+        o.angleOffsetDeg = 90.0;  // ray 0 where ray 2 was: straight up
+        const RadialSensors sensors(o, geo);
+        QCOMPARE(sensors.angle(0), M_PI / 2);
+        QCOMPARE(radialSensorAngle(o, 1), M_PI / 2 + M_PI / 4);
+        QCOMPARE(sensors.pixels(0).back().x, 50);
+        QVERIFY(sensors.pixels(0).back().y < 10);
+        QCOMPARE(sensors.pixels(6).back().y, 40);  // 90 + 270 degrees: along +x
+        QVERIFY(sensors.pixels(6).back().x > 80);
+    }
+
     void sensorRunsFollowTheClasses()
     {
         const Geometry geo(smallRing(), cv::Mat());

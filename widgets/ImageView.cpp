@@ -136,7 +136,7 @@ void ImageView::paintOverlay(QPainter& p) const
     if (overlays_->sensors) {
         p.setPen(QPen(overlay_colour::sensors(), 1));
         for (int i = 0; i < c.sensors.count; ++i) {
-            const double a = 2.0 * M_PI * i / c.sensors.count;
+            const double a = radialSensorAngle(c.sensors, i);
             const QPointF dir(std::cos(a), -std::sin(a));
             p.drawLine(toWidget(centre + dir * c.sensors.innerRadius), toWidget(centre + dir * c.sensors.outerRadius));
         }

@@ -21,15 +21,18 @@ PipelineView::PipelineView(QWidget* parent) : QWidget(parent), grid_(new QGridLa
         connect(view, &ImageView::hovered, this, &PipelineView::hovered);
         connect(view, &ImageView::left, this, &PipelineView::left);
         connect(view, &ImageView::doubleClicked, this, [this, i] { toggleEnlarged(i); });
-        // The left button is captured for truth marking or for the geometry editor, never both.
+        // The left button is captured for truth marking, the geometry or another editor: one at a time.
         connect(view, &ImageView::markPressed, this, [this](QPointF p) {
-            if (editingGeometry_) emit geometryPressed(p); else emit markPressed(p);
+            if (paneEditor_) emit editorPressed(p);
+            else if (editingGeometry_) emit geometryPressed(p); else emit markPressed(p);
         });
         connect(view, &ImageView::markDragged, this, [this](QPointF p) {
-            if (editingGeometry_) emit geometryDragged(p); else emit markDragged(p);
+            if (paneEditor_) emit editorDragged(p);
+            else if (editingGeometry_) emit geometryDragged(p); else emit markDragged(p);
         });
         connect(view, &ImageView::markReleased, this, [this](QPointF p) {
-            if (editingGeometry_) emit geometryReleased(p); else emit markReleased(p);
+            if (paneEditor_) emit editorReleased(p);
+            else if (editingGeometry_) emit geometryReleased(p); else emit markReleased(p);
         });
         // A click on a pane takes the keyboard back from an editor: arrows, Space, T act again.
         view->setFocusPolicy(Qt::ClickFocus);
@@ -90,6 +93,7 @@ void PipelineView::setTruth(const TruthOverlay& truth)
 void PipelineView::setMarking(bool on)
 {
     editingGeometry_ = false;
+    paneEditor_ = nullptr;
     for (ImageView* v : panes_) v->setMarking(on);
 }
 
@@ -97,6 +101,14 @@ void PipelineView::setEditingGeometry(bool on)
 {
     for (ImageView* v : panes_) v->setMarking(on);
     editingGeometry_ = on;
+    if (on) paneEditor_ = nullptr;
+}
+
+void PipelineView::setPaneEditor(const QObject* editor)
+{
+    for (ImageView* v : panes_) v->setMarking(editor != nullptr);
+    paneEditor_ = editor;
+    if (editor) editingGeometry_ = false;
 }
 
 void PipelineView::showRun(const PipelineRun& run, std::shared_ptr<const OverlayData> overlay)

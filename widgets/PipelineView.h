@@ -46,6 +46,11 @@ public:
     // Geometry editing: the left button drags the centre and the radii (GeometryEditor)
     // instead of marking or panning; turning it on turns marking off and the other way round.
     void setEditingGeometry(bool on);
+    // Any other editor of the panes (MaskEditor, RadialSensorEditor): while `editor` is set,
+    // the left button reports to it through editorPressed/Dragged/Released, and each editor
+    // acts only while paneEditor() is itself. Null gives the button back (panning).
+    void setPaneEditor(const QObject* editor);
+    const QObject* paneEditor() const { return paneEditor_; }
     double paneScale() const { return panes_[0]->scale(); }  // widget px per image px
 
 signals:
@@ -57,6 +62,9 @@ signals:
     void geometryPressed(QPointF imagePos);
     void geometryDragged(QPointF imagePos);
     void geometryReleased(QPointF imagePos);
+    void editorPressed(QPointF imagePos);
+    void editorDragged(QPointF imagePos);
+    void editorReleased(QPointF imagePos);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -75,6 +83,7 @@ private:
     QWidget* side_ = nullptr;
     int enlarged_ = -1;
     bool editingGeometry_ = false;
+    const QObject* paneEditor_ = nullptr;
 };
 
 }  // namespace omnitune

@@ -38,6 +38,7 @@ const Section kSections[] = {
     {"hough", QT_TRANSLATE_NOOP("omnitune::ThresholdPanel", "Specific Hough (thesis 4.1)")},
     {"opencv_hough", QT_TRANSLATE_NOOP("omnitune::ThresholdPanel", "OpenCV Hough (thesis 4.2)")},
     {"validation", QT_TRANSLATE_NOOP("omnitune::ThresholdPanel", "Validation (thesis 4.4)")},
+    {"sensors", QT_TRANSLATE_NOOP("omnitune::ThresholdPanel", "Radial sensors (thesis fig. 4.3)")},
     {"algorithm", QT_TRANSLATE_NOOP("omnitune::ThresholdPanel", "Algorithm")},
 };
 

@@ -33,6 +33,17 @@ MaskImportResult importMask(const cv::Mat& image, MaskConvention convention, con
     }
     const int type = convention == MaskConvention::BrightProcesses ? cv::THRESH_BINARY : cv::THRESH_BINARY_INV;
     cv::threshold(value, r.fit.mask, 127, 255, type);
+    // One value everywhere marks nothing: a blank export, or the wrong file.
+    const int processed = cv::countNonZero(r.fit.mask);
+    if (processed == 0 || processed == r.fit.mask.rows * r.fit.mask.cols) {
+        r.error = FitError{FitErrorKind::Uniform,
+                           std::string("the mask image is all one value (") +
+                               (processed == 0 ? "no pixel" : "every pixel") +
+                               " would be processed): it tells robot from field nowhere; choose the mask file itself, "
+                               "not a blank or a photo of the field"};
+        r.fit = {};
+        return r;
+    }
     r.fit.processedShare = maskProcessedShare(r.fit.mask, geometry);
     return r;
 }

@@ -29,7 +29,8 @@ struct MaskImportResult {
     bool ok() const { return !error.has_value(); }
 };
 
-// `image`: 8-bit grey, BGR or BGRA (alpha ignored) of the geometry's image size.
+// `image`: 8-bit grey, BGR or BGRA (alpha ignored) of the geometry's image size. Refused: another
+// size, another pixel type, and an image that comes out all one value (it marks nothing).
 MaskImportResult importMask(const cv::Mat& image, MaskConvention convention, const GeometryOptions& geometry);
 
 }  // namespace omnitune

@@ -1,0 +1,69 @@
+#include "widgets/PaneEditors.h"
+
+#include "widgets/GeometryEditor.h"
+#include "widgets/MaskEditor.h"
+#include "widgets/MaskImportDialog.h"
+#include "widgets/PipelineRunner.h"
+#include "widgets/RadialSensorEditor.h"
+#include "widgets/TruthMarker.h"
+
+#include <QAction>
+#include <QMenu>
+
+namespace omnitune {
+
+PaneEditors::PaneEditors(ConfigDocument* doc, PipelineView* view, GeometryEditor* geometry, TruthMarker* marker,
+                         RayStrip* strip, QWidget* parent)
+    : QObject(parent), doc_(doc), parent_(parent), geometry_(geometry), marker_(marker),
+      mask_(new MaskEditor(doc, view, this)), sensors_(new RadialSensorEditor(doc, view, strip, this))
+{
+    connect(mask_, &MaskEditor::message, this, &PaneEditors::message);
+    connect(sensors_, &RadialSensorEditor::message, this, &PaneEditors::message);
+    connect(mask_, &MaskEditor::editingChanged, this, [this](bool on) { exclusive(mask_, on); });
+    connect(sensors_, &RadialSensorEditor::editingChanged, this, [this](bool on) { exclusive(sensors_, on); });
+    connect(geometry_, &GeometryEditor::editingChanged, this, [this](bool on) { exclusive(geometry_, on); });
+    connect(marker_, &TruthMarker::markingChanged, this, [this](bool on) { exclusive(marker_, on); });
+}
+
+void PaneEditors::exclusive(const QObject* from, bool on)
+{
+    if (!on) return;
+    if (from != mask_) mask_->setEditing(false);
+    if (from != sensors_) sensors_->setEditing(false);
+    if (from != geometry_) geometry_->setEditing(false);
+    if (from != marker_ && marker_->isMarking()) marker_->setMarking(false);
+}
+
+void PaneEditors::fillMenu(QMenu* camera)
+{
+    mask_->fillMenu(camera);
+    QAction* import = camera->addAction(tr("&Import mask..."), this, [this] {
+        MaskImportDialog::start(doc_, run_ ? run_->result.stages.acquired : cv::Mat(), parent_);
+    });
+    import->setObjectName(QStringLiteral("importMask"));
+    import->setStatusTip(tr("Use a mask image made elsewhere, after a preview; choose which side means process"));
+    camera->addSeparator();
+    sensors_->fillMenu(camera);
+}
+
+void PaneEditors::setRun(std::shared_ptr<const PipelineRun> run)
+{
+    run_ = run;
+    sensors_->setRun(std::move(run));
+}
+
+void PaneEditors::stopEditing()
+{
+    mask_->setEditing(false);
+    sensors_->setEditing(false);
+    run_.reset();
+    sensors_->setRun(nullptr);
+}
+
+void PaneEditors::escape()
+{
+    if (mask_->isEditing()) mask_->escape();
+    else sensors_->setEditing(false);
+}
+
+}  // namespace omnitune

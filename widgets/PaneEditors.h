@@ -1,0 +1,57 @@
+#pragma once
+// The window's editors that paint or drag on the panes beyond the geometry (issue 11): the
+// mask editor, mask import and the radial sensor editor with its ray strip, wired so that one
+// of them, the geometry editor or truth marking holds the left button at a time. Keeps that
+// wiring out of the main window, which only places the tool bar and the strip.
+#include <QObject>
+
+#include <memory>
+
+class QMenu;
+class QWidget;
+
+namespace omnitune {
+
+class ConfigDocument;
+class GeometryEditor;
+class MaskEditor;
+class PipelineView;
+class RadialSensorEditor;
+class RayStrip;
+class TruthMarker;
+struct PipelineRun;
+
+class PaneEditors : public QObject {
+    Q_OBJECT
+public:
+    PaneEditors(ConfigDocument* doc, PipelineView* view, GeometryEditor* geometry, TruthMarker* marker, RayStrip* strip,
+                QWidget* parent);
+
+    MaskEditor* mask() const { return mask_; }
+    RadialSensorEditor* sensors() const { return sensors_; }
+    // Camera menu: Edit mask (M), the mask tools, Import mask..., Edit radial sensors (R).
+    void fillMenu(QMenu* camera);
+    // The run on screen: the ray strip's classes and the import preview's frame.
+    void setRun(std::shared_ptr<const PipelineRun> run);
+    // Every editor off (another source opens).
+    void stopEditing();
+    // Escape: an open polygon is dropped, then the editing ends.
+    void escape();
+
+signals:
+    void message(const QString& text);  // for the status bar
+
+private:
+    // `on` from one holder of the left button turns every other one off.
+    void exclusive(const QObject* from, bool on);
+
+    ConfigDocument* doc_;
+    QWidget* parent_;
+    GeometryEditor* geometry_;
+    TruthMarker* marker_;
+    MaskEditor* mask_;
+    RadialSensorEditor* sensors_;
+    std::shared_ptr<const PipelineRun> run_;
+};
+
+}  // namespace omnitune
