@@ -16,9 +16,11 @@ namespace {
 constexpr int kBarHeight = 22;   // px of the coloured bar
 constexpr double kTickPx = 50.0; // image px between radius ticks
 
-QColor classColour(ColorClass c)
+QColor classColour(const ColourClasses& classes, ColorClass c)
 {
-    const auto bgr = colorClassDisplayBgr(c);
+    const int index = int(c) - 1;
+    if (index < 0 || index >= int(classes.size())) return QColor(60, 60, 60);
+    const auto& bgr = classes[std::size_t(index)].display;
     return QColor(bgr[2], bgr[1], bgr[0]);
 }
 
@@ -50,6 +52,7 @@ void RayStrip::showRay(const PipelineRun& run, int ray)
     }
     ray_ = ray;
     options_ = c.sensors;
+    classes_ = c.colors.classes;
     angleDeg_ = std::fmod(radialSensorAngle(c.sensors, ray) * 180.0 / M_PI, 360.0);
     const RadialSensors sensors(c.sensors, Geometry(c.geometry, c.mask));
     sensors.runs(run.result.classes, ray, runs_);
@@ -77,9 +80,9 @@ void RayStrip::paintEvent(QPaintEvent*)
     // A run covers its pixels' radii, half a pixel step either side.
     for (const ClassRun& r : runs_) {
         const QRectF box(QPointF(xAt(r.startRadius - 0.5), bar.top()), QPointF(xAt(r.endRadius + 0.5), bar.bottom()));
-        const QColor colour = classColour(r.colorClass);
+        const QColor colour = classColour(classes_, r.colorClass);
         p.fillRect(box, colour);
-        const QString name = QString::fromLatin1(colorClassKey(r.colorClass).data(), int(colorClassKey(r.colorClass).size()));
+        const QString name = QString::fromStdString(colourClassName(classes_, r.colorClass));
         if (fm.horizontalAdvance(name) + 4 < box.width()) {
             p.setPen(colour.lightness() > 128 ? Qt::black : Qt::white);
             p.drawText(box, Qt::AlignCenter, name);

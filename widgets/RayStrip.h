@@ -5,6 +5,7 @@
 // runs come from the core's RadialSensors on that run's segmented class image, so the strip
 // is what the robot would see with that config. Pixels the geometry or the mask leave out
 // are the gaps.
+#include "core/ColourClasses.h"
 #include "core/RadialSensors.h"
 
 #include <QWidget>
@@ -37,6 +38,7 @@ private:
     int ray_ = -1;
     double angleDeg_ = 0.0;
     RadialSensorOptions options_;
+    ColourClasses classes_;  // of the run shown: names and display colours by id
     std::vector<ClassRun> runs_;
 };
 
