@@ -5,6 +5,7 @@
 #include "widgets/CandidateTableModel.h"
 #include "widgets/CandidateTableView.h"
 #include "widgets/ConfigFiles.h"
+#include "widgets/DistancePointsPanel.h"
 #include "widgets/FrameNavigator.h"
 #include "widgets/GeometryEditor.h"
 #include "calib/source/FrameSourceFactory.h"
@@ -265,6 +266,20 @@ void MainWindow::buildMenus()
     paneEditors_->fillMenu(camera);
     addToolBar(Qt::TopToolBarArea, paneEditors_->mask()->toolBar());
     connect(paneEditors_, &PaneEditors::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    paneEditors_->distances()->hide();
+    // A tab beside the thresholds from the first use on (docked earlier, its size would squeeze them).
+    camera->addAction(tr("&Distance map points and fit..."), this, [this] {
+        auto* dock = findChild<QDockWidget*>("distanceMap");
+        if (!dock) {
+            dock = new QDockWidget(tr("Distance map"), this);
+            dock->setObjectName("distanceMap");
+            dock->setWidget(paneEditors_->distances());
+            addDockWidget(Qt::RightDockWidgetArea, dock);
+            if (auto* thresholds = findChild<QDockWidget*>("thresholds")) tabifyDockWidget(thresholds, dock);
+        }
+        dock->show();
+        dock->raise();
+    })->setObjectName("distanceMapPoints");
     camera->addSeparator();
     setUpCameraAction_ = camera->addAction(tr("&Set up this camera (centre, rim, body, mask)"), cameraSetup_, &CameraSetup::setUp);
     setUpCameraAction_->setObjectName("setUpCamera");

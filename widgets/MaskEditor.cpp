@@ -167,14 +167,11 @@ void MaskEditor::fillMenu(QMenu* menu)
 void MaskEditor::setEditing(bool on)
 {
     if (on == editing_) return;
+    if (stroking_) onReleased(last_);  // a stroke cut short (Esc, M while dragging) still ends as one step
     editing_ = on;
-    stroking_ = false;
     polygon_.clear();
     emit editingChanged(on);  // truth marking and the geometry editor give the left button up first
-    if (on)
-        view_->setPaneEditor(this);
-    else if (view_->paneEditor() == this)
-        view_->setPaneEditor(nullptr);
+    holdPanes(view_, this, on);
     if (modeAction_) modeAction_->setChecked(on);
     for (QAction* a : editingActions_) a->setEnabled(on);
     toolBar_->setVisible(on);

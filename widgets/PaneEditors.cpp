@@ -1,5 +1,6 @@
 #include "widgets/PaneEditors.h"
 
+#include "widgets/DistancePointsPanel.h"
 #include "widgets/GeometryEditor.h"
 #include "widgets/MaskEditor.h"
 #include "widgets/MaskImportDialog.h"
@@ -15,8 +16,11 @@ namespace omnitune {
 PaneEditors::PaneEditors(ConfigDocument* doc, PipelineView* view, GeometryEditor* geometry, TruthMarker* marker,
                          RayStrip* strip, QWidget* parent)
     : QObject(parent), doc_(doc), parent_(parent), geometry_(geometry), marker_(marker),
-      mask_(new MaskEditor(doc, view, this)), sensors_(new RadialSensorEditor(doc, view, strip, this))
+      mask_(new MaskEditor(doc, view, this)), sensors_(new RadialSensorEditor(doc, view, strip, this)),
+      distances_(new DistancePointsPanel(doc, view, parent))
 {
+    connect(distances_, &DistancePointsPanel::message, this, &PaneEditors::message);
+    connect(distances_, &DistancePointsPanel::addingChanged, this, [this](bool on) { exclusive(distances_, on); });
     connect(mask_, &MaskEditor::message, this, &PaneEditors::message);
     connect(sensors_, &RadialSensorEditor::message, this, &PaneEditors::message);
     connect(mask_, &MaskEditor::editingChanged, this, [this](bool on) { exclusive(mask_, on); });
@@ -30,6 +34,7 @@ void PaneEditors::exclusive(const QObject* from, bool on)
     if (!on) return;
     if (from != mask_) mask_->setEditing(false);
     if (from != sensors_) sensors_->setEditing(false);
+    if (from != distances_) distances_->setAdding(false);
     if (from != geometry_) geometry_->setEditing(false);
     if (from != marker_ && marker_->isMarking()) marker_->setMarking(false);
 }
@@ -56,14 +61,19 @@ void PaneEditors::stopEditing()
 {
     mask_->setEditing(false);
     sensors_->setEditing(false);
+    distances_->setAdding(false);
     run_.reset();
     sensors_->setRun(nullptr);
 }
 
 void PaneEditors::escape()
 {
-    if (mask_->isEditing()) mask_->escape();
-    else sensors_->setEditing(false);
+    if (mask_->isEditing()) {
+        mask_->escape();
+        return;
+    }
+    sensors_->setEditing(false);
+    distances_->setAdding(false);
 }
 
 }  // namespace omnitune

@@ -1,6 +1,7 @@
 #pragma once
 // The window's editors that paint or drag on the panes beyond the geometry (issue 11): the
-// mask editor, mask import and the radial sensor editor with its ray strip, wired so that one
+// mask editor, mask import, the radial sensor editor with its ray strip and the distance-map
+// points (a panel the window docks), wired so that one
 // of them, the geometry editor or truth marking holds the left button at a time. Keeps that
 // wiring out of the main window, which only places the tool bar and the strip.
 #include <QObject>
@@ -13,6 +14,7 @@ class QWidget;
 namespace omnitune {
 
 class ConfigDocument;
+class DistancePointsPanel;
 class GeometryEditor;
 class MaskEditor;
 class PipelineView;
@@ -29,6 +31,7 @@ public:
 
     MaskEditor* mask() const { return mask_; }
     RadialSensorEditor* sensors() const { return sensors_; }
+    DistancePointsPanel* distances() const { return distances_; }
     // Camera menu: Edit mask (M), the mask tools, Import mask..., Edit radial sensors (R).
     void fillMenu(QMenu* camera);
     // The run on screen: the ray strip's classes and the import preview's frame.
@@ -51,6 +54,7 @@ private:
     TruthMarker* marker_;
     MaskEditor* mask_;
     RadialSensorEditor* sensors_;
+    DistancePointsPanel* distances_;
     std::shared_ptr<const PipelineRun> run_;
 };
 

@@ -20,4 +20,13 @@ void connectPaneInput(PipelineView* view, Editor* editor, void (Editor::*pressed
     QObject::connect(view, &PipelineView::editorReleased, editor, route(released));
 }
 
+// Gives the left button to `editor` (on) or back to panning, unless another editor holds it.
+inline void holdPanes(PipelineView* view, const QObject* editor, bool on)
+{
+    if (on)
+        view->setPaneEditor(editor);
+    else if (view->paneEditor() == editor)
+        view->setPaneEditor(nullptr);
+}
+
 }  // namespace omnitune

@@ -57,13 +57,13 @@ void RadialSensorEditor::fillMenu(QMenu* menu)
 void RadialSensorEditor::setEditing(bool on)
 {
     if (on == editing_) return;
+    if (grab_.handle != Handle::None) {  // a drag cut short (Esc, R while dragging): back to where it began
+        grab_ = {};
+        if (moved_) doc_->applyConfig(start_);
+    }
     editing_ = on;
-    grab_ = {};
     emit editingChanged(on);  // the other editors give the left button up first
-    if (on)
-        view_->setPaneEditor(this);
-    else if (view_->paneEditor() == this)
-        view_->setPaneEditor(nullptr);
+    holdPanes(view_, this, on);
     if (modeAction_) modeAction_->setChecked(on);
     for (QWidget* w : sketches_) w->setVisible(on);
     strip_->setVisible(on);

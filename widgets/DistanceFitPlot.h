@@ -1,0 +1,32 @@
+#pragma once
+// The distance map's calibration points, the fitted curve and the residuals (issue 11): ground
+// distance over image radius on top, the residual of each point (cm) below, with the RMS, so a
+// point typed wrong or a curve that bends stands out.
+#include "calib/fit/DistanceMapFit.h"
+
+#include <QWidget>
+
+#include <optional>
+#include <vector>
+
+namespace omnitune {
+
+class DistanceFitPlot : public QWidget {
+    Q_OBJECT
+public:
+    explicit DistanceFitPlot(QWidget* parent = nullptr);
+
+    // Points alone (no fit yet, or a refused one), or points with their fit.
+    void setData(std::vector<DistancePoint> points, std::optional<DistanceMapFit> fit);
+    const std::optional<DistanceMapFit>& fit() const { return fit_; }
+    QSize sizeHint() const override { return QSize(320, 240); }
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+
+private:
+    std::vector<DistancePoint> points_;
+    std::optional<DistanceMapFit> fit_;
+};
+
+}  // namespace omnitune
