@@ -20,6 +20,7 @@ struct CameraAutoOptions {
     int gainMax = 1023;            // register: gain is not raised above this (noise)
     double chromaTarget = 128.0;   // U and V of the white region for neutral white (8-bit YCbCr)
     double chromaTolerance = 3.0;  // |U - target| and |V - target| accepted
+    double whiteClip = 250.0;      // a white-region channel mean at or above this is clipped
     double whiteBalanceKp = 0.001; // range/level: proportional gain on white balance U/B and V/R
     double whiteBalanceKi = 0.003; // range/level per iteration: integral gain on white balance
     double blackTarget = 20.0;     // mean grey level of the black region

@@ -112,6 +112,8 @@ std::vector<ConfigKey> buildSchema()
                [](auto& c) -> auto& { return c.cameraAuto.chromaTarget; });
     autoDouble("chroma_tolerance", "0..255", 0.1, 64, "Accepted distance of the white region's U and V from the target",
                [](auto& c) -> auto& { return c.cameraAuto.chromaTolerance; });
+    autoDouble("white_clip", "0..255", 1, 255, "A white-region channel whose mean reaches this is clipped: its white-balance gain comes down first, and a clipped green ends the run",
+               [](auto& c) -> auto& { return c.cameraAuto.whiteClip; });
     autoDouble("white_balance_kp", "range/level", 0, 1, "Proportional gain of the white-balance controllers (U/B from U, V/R from V)",
                [](auto& c) -> auto& { return c.cameraAuto.whiteBalanceKp; });
     autoDouble("white_balance_ki", "range/level", 0, 1, "Integral gain of the white-balance controllers per iteration",

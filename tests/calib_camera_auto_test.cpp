@@ -142,6 +142,24 @@ private slots:
         QVERIFY(fe.value <= 100);
     }
 
+    // Counting the dark housing too (no mask) drives the exposure up until the white card
+    // clips: clipped white must not pass as neutral (it did: "converged" with V/R still at 780).
+    void clippedWhiteIsNeverNeutral()
+    {
+        SimulatedCameraOptions so;
+        so.start = SimulatedStart::Tinted;
+        so.poses = 2;
+        SimulatedCamera cam(so);
+        QVERIFY(!cam.open());
+        const CameraAutoOptions o;
+        const CameraAutoResult r = runCameraAutoCalibration(cam, o, cv::Mat());
+        const cv::Vec3d w = r.last.measured.white;
+        if (r.state == CameraAutoState::Converged)
+            QVERIFY2(std::max({w[0], w[1], w[2]}) < o.whiteClip, formatCameraMeasurement(r.last.measured).c_str());
+        else
+            QVERIFY2(r.reason.find("the white region clips") != std::string::npos, r.reason.c_str());
+    }
+
     void iterationCapIsReported()
     {
         SimulatedCamera cam(cameraOptions(SimulatedStart::Dark));

@@ -53,6 +53,8 @@ std::optional<std::string> measureCameraFrame(const cv::Mat& bgr, const cv::Mat&
     const cv::Scalar white = cv::mean(ycrcb);
     out.v = white[1];
     out.u = white[2];
+    const cv::Scalar whiteBgr = cv::mean(bgr(whiteRegion(o)));
+    out.white = {whiteBgr[0], whiteBgr[1], whiteBgr[2]};
     out.black = cv::mean(grey(blackRegion(o)))[0];
     return std::nullopt;
 }
@@ -107,8 +109,10 @@ void CameraAutoCalibration::fail(std::string reason)
 bool CameraAutoCalibration::within(const CameraMeasurement& m) const
 {
     const auto& o = options_;
+    const bool unclipped = std::max({m.white[0], m.white[1], m.white[2]}) < o.whiteClip;
     const bool wb = !has(CameraFeatureId::WhiteBalanceBlue) ||
-                    (std::abs(m.u - o.chromaTarget) <= o.chromaTolerance && std::abs(m.v - o.chromaTarget) <= o.chromaTolerance);
+                    (unclipped && std::abs(m.u - o.chromaTarget) <= o.chromaTolerance &&
+                     std::abs(m.v - o.chromaTarget) <= o.chromaTolerance);
     const bool black = !has(CameraFeatureId::Brightness) || std::abs(m.black - o.blackTarget) <= o.blackTolerance;
     return std::abs(m.msv - o.msvTarget) <= o.msvTolerance && wb && black;
 }
@@ -157,9 +161,9 @@ std::optional<CameraError> CameraAutoCalibration::step(CameraAutoIteration& out)
     // White and black levels scale with the exposure: their limits count only once the MSV is
     // within tolerance, or a bright start would give up on brightness before exposure came down.
     const bool exposed = std::abs(o.msvTarget - m.msv) <= o.msvTolerance;
-    const auto stuck = [&](CameraFeatureId key, bool moved, const std::string& why) {
+    const auto stuck = [&](const std::string& key, bool moved, const std::string& why) {
         int& n = limitCount_[key];
-        n = moved || (key != CameraFeatureId::Exposure && !exposed) ? 0 : n + 1;
+        n = moved || (key != "msv" && !exposed) ? 0 : n + 1;
         if (n >= o.limitIterations && state_ == CameraAutoState::Running) fail(why);
     };
 
@@ -181,7 +185,7 @@ std::optional<CameraError> CameraAutoCalibration::step(CameraAutoIteration& out)
         }
         const bool moved = useExposure ? move(CameraFeatureId::Exposure, exposurePi_.update(e), std::nullopt, o.exposureMax)
                                        : move(CameraFeatureId::Gain, gainPi_.update(e), o.gainMin, o.gainMax);
-        stuck(CameraFeatureId::Exposure, moved,
+        stuck("msv", moved,
               e > 0 ? "exposure and gain at their upper limits (" + valueText(CameraFeatureId::Exposure) +
                           ", exposure_max " + std::to_string(o.exposureMax) + "; " + valueText(CameraFeatureId::Gain) +
                           ", gain_max " + std::to_string(o.gainMax) + ") and the image is still too dark: msv " +
@@ -191,15 +195,24 @@ std::optional<CameraError> CameraAutoCalibration::step(CameraAutoIteration& out)
                           ") and the image is still too bright: msv " + fixed(m.msv, 2) + ", target " +
                           fixed(o.msvTarget, 2));
     }
-    // White balance: U below neutral wants more blue, V above neutral less red.
-    if (has(CameraFeatureId::WhiteBalanceBlue) && std::abs(m.u - o.chromaTarget) > o.chromaTolerance)
-        stuck(CameraFeatureId::WhiteBalanceBlue, move(CameraFeatureId::WhiteBalanceBlue, bluePi_.update(o.chromaTarget - m.u)),
+    // White balance: U below neutral wants more blue, V above neutral less red. A clipped blue
+    // or red channel reads as neutral when it is not: its gain comes down first. A clipped green
+    // is the exposure's doing, which white balance cannot mend.
+    const double clipPush = -2.0 * o.chromaTolerance;
+    const double eu = m.white[0] >= o.whiteClip ? std::min(o.chromaTarget - m.u, clipPush) : o.chromaTarget - m.u;
+    const double ev = m.white[2] >= o.whiteClip ? std::min(o.chromaTarget - m.v, clipPush) : o.chromaTarget - m.v;
+    if (has(CameraFeatureId::WhiteBalanceBlue) && std::abs(eu) > o.chromaTolerance)
+        stuck("wb_u", move(CameraFeatureId::WhiteBalanceBlue, bluePi_.update(eu)),
               "white balance U/B at its limit and the white region is still not neutral: u " + fixed(m.u, 1));
-    if (has(CameraFeatureId::WhiteBalanceRed) && std::abs(m.v - o.chromaTarget) > o.chromaTolerance)
-        stuck(CameraFeatureId::WhiteBalanceRed, move(CameraFeatureId::WhiteBalanceRed, redPi_.update(o.chromaTarget - m.v)),
+    if (has(CameraFeatureId::WhiteBalanceRed) && std::abs(ev) > o.chromaTolerance)
+        stuck("wb_v", move(CameraFeatureId::WhiteBalanceRed, redPi_.update(ev)),
               "white balance V/R at its limit and the white region is still not neutral: v " + fixed(m.v, 1));
+    if (m.white[1] >= o.whiteClip)
+        stuck("white_clip", false,
+              "the white region clips (green " + fixed(m.white[1], 0) + ") at the exposure the MSV target asks for: "
+              "a greyer card or a lower camera_auto.msv_target");
     if (has(CameraFeatureId::Brightness) && std::abs(m.black - o.blackTarget) > o.blackTolerance)
-        stuck(CameraFeatureId::Brightness, move(CameraFeatureId::Brightness, brightnessPi_.update(o.blackTarget - m.black)),
+        stuck("black", move(CameraFeatureId::Brightness, brightnessPi_.update(o.blackTarget - m.black)),
               "brightness at its limit and the black region is still at " + fixed(m.black, 1) + ", target " +
                   fixed(o.blackTarget, 1));
     if (state_ != CameraAutoState::Running) return std::nullopt;

@@ -30,6 +30,7 @@ struct CameraMeasurement {
     double u = 0.0;      // white region's mean Cb, 0..255 (128 neutral)
     double v = 0.0;      // white region's mean Cr
     double black = 0.0;  // black region's mean grey level
+    cv::Vec3d white;     // white region's mean B, G, R: a clipped channel makes U and V meaningless
 };
 
 // Measures a BGR frame. `usedMask` (empty: every pixel) selects the MSV's pixels. Returns a
@@ -82,7 +83,7 @@ private:
     cv::Mat usedMask_;
     std::map<CameraFeatureId, CameraFeature> features_;  // what the camera has, with ranges
     std::map<CameraFeatureId, double> command_;          // unrounded register values the controllers drive
-    std::map<CameraFeatureId, int> limitCount_;          // iterations at a limit with the error's sign kept
+    std::map<std::string, int> limitCount_;              // per quantity: iterations it could not be corrected
     CameraSettings before_;
     CameraAutoState state_ = CameraAutoState::Idle;
     std::string reason_;

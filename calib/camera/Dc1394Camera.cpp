@@ -235,6 +235,7 @@ std::optional<CameraError> Dc1394Camera::start()
         return error(CameraErrorKind::Device, "would not start sending" + takeLog());
     }
     started_ = true;
+    refreshSettings();
     firstTimestampUs_ = -1;
     return std::nullopt;
 }
@@ -279,9 +280,7 @@ std::optional<CameraError> Dc1394Camera::grab(Frame& out)
     index_ += dropped;
     out.index = index_++;
     out.format = PixelFormat::Bgr8;
-    CameraSettings s;
-    s.model = name_;
-    out.camera = readCameraSettings(*this, s);
+    out.camera = settings_;
     return std::nullopt;
 }
 
@@ -301,6 +300,13 @@ void Dc1394Camera::close()
     if (context_) dc1394_free(static_cast<dc1394_t*>(context_));
     camera_ = context_ = nullptr;
     size_ = {};
+}
+
+void Dc1394Camera::refreshSettings()
+{
+    CameraSettings s;
+    s.model = name_;
+    settings_ = readCameraSettings(*this, s);
 }
 
 std::vector<CameraFeature> Dc1394Camera::features()
@@ -340,6 +346,7 @@ std::optional<CameraError> Dc1394Camera::writeFeature(CameraFeatureId id, int va
     if (err != DC1394_SUCCESS)
         return error(CameraErrorKind::Device, "refused " + std::string(cameraFeatureName(id)) + " " +
                                                   std::to_string(value) + takeLog());
+    refreshSettings();
     return std::nullopt;
 }
 
@@ -350,6 +357,7 @@ std::optional<CameraError> Dc1394Camera::writeAuto(CameraFeatureId id, bool on)
         DC1394_SUCCESS)
         return error(CameraErrorKind::Device, "refused to turn " + std::string(cameraFeatureName(id)) + "'s auto mode " +
                                                   (on ? "on" : "off") + takeLog());
+    refreshSettings();
     return std::nullopt;
 }
 

@@ -185,6 +185,7 @@ std::optional<CameraError> V4l2Camera::start()
     if (xioctl(fd_, VIDIOC_STREAMON, &type) != 0)
         return error(CameraErrorKind::Device, "would not start streaming (" + std::string(std::strerror(errno)) + ")");
     started_ = true;
+    refreshSettings();
     firstTimestampS_ = -1;
     return std::nullopt;
 }
@@ -232,9 +233,7 @@ std::optional<CameraError> V4l2Camera::grab(Frame& out)
     index_ += std::max(dropped, 0);
     out.index = index_++;
     out.format = PixelFormat::Bgr8;
-    CameraSettings s;
-    s.model = card_;
-    out.camera = readCameraSettings(*this, s);
+    out.camera = settings_;
     return std::nullopt;
 }
 
@@ -256,6 +255,13 @@ void V4l2Camera::close()
     fd_ = -1;
     size_ = {};
     pixelFormat_ = 0;
+}
+
+void V4l2Camera::refreshSettings()
+{
+    CameraSettings s;
+    s.model = card_;
+    settings_ = readCameraSettings(*this, s);
 }
 
 std::vector<CameraFeature> V4l2Camera::features()
@@ -291,6 +297,7 @@ std::optional<CameraError> V4l2Camera::writeFeature(CameraFeatureId id, int valu
         return error(CameraErrorKind::Device, "refused " + std::string(cameraFeatureName(id)) + " " +
                                                   std::to_string(value) + " (" + std::strerror(errno) + ")");
     }
+    refreshSettings();
     return std::nullopt;
 }
 
@@ -302,6 +309,7 @@ std::optional<CameraError> V4l2Camera::writeAuto(CameraFeatureId id, bool on)
     if (xioctl(fd_, VIDIOC_S_CTRL, &c) != 0 && on)
         return error(CameraErrorKind::Device, "refused to turn " + std::string(cameraFeatureName(id)) + "'s auto mode on (" +
                                                   std::strerror(errno) + ")");
+    refreshSettings();
     return std::nullopt;
 }
 

@@ -51,6 +51,10 @@ private:
     unsigned pixelFormat_ = 0;
     std::vector<Buffer> buffers_;
     bool started_ = false;
+    // What frames report as their settings: read at start() and after every write (reading the
+    // camera's registers every frame would cost bus time at 30 frames/s).
+    CameraSettings settings_;
+    void refreshSettings();
     int index_ = 0;
     double firstTimestampS_ = -1;
 };

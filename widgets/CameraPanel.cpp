@@ -1,0 +1,272 @@
+#include "widgets/CameraPanel.h"
+
+#include "calib/camera/CameraSettingsIo.h"
+
+#include <QCheckBox>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+namespace omnitune {
+
+namespace {
+
+QString label(CameraFeatureId id)
+{
+    switch (id) {
+    case CameraFeatureId::Exposure: return CameraPanel::tr("Exposure");
+    case CameraFeatureId::Shutter: return CameraPanel::tr("Shutter");
+    case CameraFeatureId::Gain: return CameraPanel::tr("Gain");
+    case CameraFeatureId::Brightness: return CameraPanel::tr("Brightness");
+    case CameraFeatureId::WhiteBalanceBlue: return CameraPanel::tr("White balance U/B");
+    case CameraFeatureId::WhiteBalanceRed: return CameraPanel::tr("White balance V/R");
+    case CameraFeatureId::Gamma: return CameraPanel::tr("Gamma");
+    case CameraFeatureId::Saturation: return CameraPanel::tr("Saturation");
+    }
+    return {};
+}
+
+}  // namespace
+
+CameraPanel::CameraPanel(QWidget* parent) : QWidget(parent)
+{
+    auto* layout = new QVBoxLayout(this);
+    rowsBox_ = new QWidget(this);
+    layout->addWidget(rowsBox_);
+    allAutoOff_ = new QPushButton(tr("All camera auto modes off"), this);
+    allAutoOff_->setToolTip(tr("Turns off every automatic mode of the camera, so the image does not drift during a match"));
+    layout->addWidget(allAutoOff_);
+    auto* buttons = new QHBoxLayout;
+    start_ = new QPushButton(tr("Auto-calibrate"), this);
+    start_->setToolTip(tr("Exposure, gain, white balance and brightness by the thesis' ref. [31] (camera_auto.* in the config)"));
+    stop_ = new QPushButton(tr("Stop"), this);
+    revert_ = new QPushButton(tr("Revert"), this);
+    revert_->setToolTip(tr("Back to the settings from before the calibration"));
+    buttons->addWidget(start_);
+    buttons->addWidget(stop_);
+    buttons->addWidget(revert_);
+    layout->addLayout(buttons);
+    status_ = new QLabel(this);
+    status_->setWordWrap(true);
+    layout->addWidget(status_);
+    layout->addStretch();
+
+    connect(allAutoOff_, &QPushButton::clicked, this, &CameraPanel::allAutoOff);
+    connect(start_, &QPushButton::clicked, this, &CameraPanel::startCalibration);
+    connect(stop_, &QPushButton::clicked, this, [this] { stopCalibration(tr("Calibration stopped")); });
+    connect(revert_, &QPushButton::clicked, this, &CameraPanel::revertCalibration);
+    stepTimer_.setInterval(0);
+    connect(&stepTimer_, &QTimer::timeout, this, &CameraPanel::stepCalibration);
+    rebuild();
+}
+
+CameraPanel::~CameraPanel() = default;
+
+void CameraPanel::setCamera(Camera* camera, const CameraAutoOptions& options, const cv::Mat& usedMask)
+{
+    stepTimer_.stop();
+    calibration_.reset();
+    camera_ = camera;
+    options_ = options;
+    usedMask_ = usedMask;
+    rebuild();
+    setStatus(camera_ ? QString::fromStdString(camera_->description()) : tr("No camera"), false);
+}
+
+void CameraPanel::rebuild()
+{
+    delete rowsBox_->layout();
+    qDeleteAll(rowsBox_->findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly));
+    rows_.clear();
+    auto* grid = new QGridLayout(rowsBox_);
+    grid->setContentsMargins(0, 0, 0, 0);
+    int r = 0;
+    for (const CameraFeature& f : camera_ ? camera_->features() : std::vector<CameraFeature>{}) {
+        Row row;
+        row.slider = new QSlider(Qt::Horizontal, rowsBox_);
+        row.spin = new QSpinBox(rowsBox_);
+        row.slider->setRange(f.min, f.max);
+        row.spin->setRange(f.min, f.max);
+        row.spin->setKeyboardTracking(false);  // one write on Enter, not one per digit typed
+        row.slider->setValue(f.value);
+        row.spin->setValue(f.value);
+        row.spin->setToolTip(tr("%1 .. %2, the camera's register units").arg(f.min).arg(f.max));
+        row.automatic = new QCheckBox(tr("auto"), rowsBox_);
+        row.automatic->setEnabled(f.autoCapable);
+        row.automatic->setChecked(f.autoOn);
+        if (!f.autoCapable) row.automatic->setToolTip(tr("This camera has no automatic mode for it"));
+        grid->addWidget(new QLabel(label(f.id), rowsBox_), r, 0);
+        grid->addWidget(row.slider, r, 1);
+        grid->addWidget(row.spin, r, 2);
+        grid->addWidget(row.automatic, r, 3);
+        const CameraFeatureId id = f.id;
+        connect(row.slider, &QSlider::valueChanged, row.spin, &QSpinBox::setValue);
+        connect(row.spin, QOverload<int>::of(&QSpinBox::valueChanged), this, [this, id](int v) {
+            if (!refreshing_) write(id, v);
+        });
+        connect(row.automatic, &QCheckBox::toggled, this, [this, id](bool on) {
+            if (!refreshing_) setAuto(id, on);
+        });
+        rows_[id] = row;
+        ++r;
+    }
+    grid->setColumnStretch(1, 1);
+    updateButtons();
+}
+
+void CameraPanel::refresh()
+{
+    if (!camera_) return;
+    refreshing_ = true;
+    for (const CameraFeature& f : camera_->features()) {
+        const auto it = rows_.find(f.id);
+        if (it == rows_.end()) continue;
+        const QSignalBlocker b1(it->second.slider);
+        it->second.slider->setValue(f.value);
+        it->second.spin->setValue(f.value);
+        it->second.automatic->setChecked(f.autoOn);
+    }
+    refreshing_ = false;
+}
+
+void CameraPanel::write(CameraFeatureId id, int value)
+{
+    if (!camera_) return;
+    std::string mismatch;
+    if (const auto err = setAndCheckFeature(*camera_, id, value, mismatch))
+        setStatus(QString::fromStdString(err->message), true);
+    else if (!mismatch.empty())
+        setStatus(QString::fromStdString(mismatch), true);
+    else
+        setStatus(QString::fromStdString(std::string(cameraFeatureName(id)) + " " + std::to_string(value)), false);
+    {
+        const QSignalBlocker b(rows_[id].slider);
+        rows_[id].slider->setValue(value);
+    }
+    refresh();
+}
+
+void CameraPanel::setAuto(CameraFeatureId id, bool on)
+{
+    if (!camera_) return;
+    if (const auto err = camera_->setAuto(id, on)) setStatus(QString::fromStdString(err->message), true);
+    refresh();
+}
+
+void CameraPanel::allAutoOff()
+{
+    if (!camera_) return;
+    int turnedOff = 0;
+    for (const CameraFeature& f : camera_->features())
+        if (f.autoOn) {
+            if (const auto err = camera_->setAuto(f.id, false)) {
+                setStatus(QString::fromStdString(err->message), true);
+                refresh();
+                return;
+            }
+            ++turnedOff;
+        }
+    setStatus(turnedOff ? tr("%n automatic mode(s) turned off", nullptr, turnedOff) : tr("No automatic mode was on"), false);
+    refresh();
+}
+
+void CameraPanel::startCalibration()
+{
+    if (!camera_) return;
+    calibration_ = std::make_unique<CameraAutoCalibration>(*camera_, options_, usedMask_);
+    if (const auto err = calibration_->begin()) {
+        setStatus(QString::fromStdString(err->message), true);
+        return;
+    }
+    if (calibration_->state() != CameraAutoState::Running) {
+        setStatus(tr("not converged: %1").arg(QString::fromStdString(calibration_->reason())), true);
+        return;
+    }
+    setStatus(tr("Calibrating..."), false);
+    stepTimer_.start();
+    updateButtons();
+}
+
+void CameraPanel::stepCalibration()
+{
+    if (!calibration_) return stepTimer_.stop();
+    CameraAutoIteration it;
+    const auto err = calibration_->step(it);
+    if (it.iteration > 0) {
+        emit calibrationIteration(it.iteration, it.measured.msv, it.measured.u, it.measured.v, it.measured.black);
+        setStatus(tr("iteration %1: %2").arg(it.iteration).arg(QString::fromStdString(formatCameraMeasurement(it.measured))),
+                  false);
+    }
+    refresh();
+    if (calibration_->state() == CameraAutoState::Running && !err) return;
+    stepTimer_.stop();
+    const bool converged = calibration_->state() == CameraAutoState::Converged;
+    const QString text = converged ? tr("converged: %1 iterations=%2")
+                                         .arg(QString::fromStdString(formatCameraMeasurement(it.measured)))
+                                         .arg(calibration_->iterations())
+                                   : tr("not converged: %1").arg(QString::fromStdString(calibration_->reason()));
+    setStatus(text, !converged);
+    updateButtons();
+    emit calibrationFinished(converged, text);
+}
+
+void CameraPanel::stopCalibration(const QString& why)
+{
+    stepTimer_.stop();
+    setStatus(why, false);
+    updateButtons();
+}
+
+void CameraPanel::revertCalibration()
+{
+    if (!calibration_) return;
+    stepTimer_.stop();
+    if (const auto err = calibration_->revert())
+        setStatus(QString::fromStdString(err->message), true);
+    else
+        setStatus(tr("Settings from before the calibration restored"), false);
+    refresh();
+    updateButtons();
+}
+
+void CameraPanel::setStatus(const QString& text, bool problem)
+{
+    status_->setText(text);
+    status_->setStyleSheet(problem ? "color: #b00020;" : QString());
+}
+
+QString CameraPanel::statusText() const { return status_->text(); }
+
+void CameraPanel::updateButtons()
+{
+    const bool running = stepTimer_.isActive();
+    allAutoOff_->setEnabled(camera_ && !running);
+    start_->setEnabled(camera_ && !running);
+    stop_->setEnabled(running);
+    revert_->setEnabled(calibration_ != nullptr && !running);
+}
+
+QSpinBox* CameraPanel::spinBox(CameraFeatureId id) const
+{
+    const auto it = rows_.find(id);
+    return it == rows_.end() ? nullptr : it->second.spin;
+}
+
+QSlider* CameraPanel::slider(CameraFeatureId id) const
+{
+    const auto it = rows_.find(id);
+    return it == rows_.end() ? nullptr : it->second.slider;
+}
+
+QCheckBox* CameraPanel::autoBox(CameraFeatureId id) const
+{
+    const auto it = rows_.find(id);
+    return it == rows_.end() ? nullptr : it->second.automatic;
+}
+
+}  // namespace omnitune

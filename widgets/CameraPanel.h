@@ -1,0 +1,89 @@
+#pragma once
+// The camera panel: one row per feature the camera has, a slider and a spin box with the
+// camera's own range and an auto toggle where the camera has an automatic mode; one switch that
+// turns every automatic mode off (the image must not drift during a match); every write read
+// back, a mismatch shown ("exposure is 410, asked for 400"); and the automatic calibration
+// (calib/camera/CameraAutoCalibration) started, stopped and reverted from here, one iteration
+// per event-loop turn, its progress in the status line. The camera is driven on the GUI
+// thread: each calibration iteration waits for a few frames (~0.1 s on a 30 frames/s camera).
+#include "calib/camera/Camera.h"
+#include "calib/camera/CameraAutoCalibration.h"
+#include "core/CameraAutoOptions.h"
+
+#include <QTimer>
+#include <QWidget>
+
+#include <map>
+#include <memory>
+
+class QCheckBox;
+class QLabel;
+class QPushButton;
+class QSlider;
+class QSpinBox;
+
+namespace omnitune {
+
+class CameraPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit CameraPanel(QWidget* parent = nullptr);
+    ~CameraPanel() override;
+
+    // `camera` must be open and outlive the panel, or be replaced (nullptr: none) before it
+    // goes. `usedMask`: the pixels the calibration's MSV counts (empty: the whole frame).
+    void setCamera(Camera* camera, const CameraAutoOptions& options = {}, const cv::Mat& usedMask = {});
+
+    // Reads every feature back into the controls.
+    void refresh();
+
+    // For tests and the window: the controls of one feature (null when the camera lacks it).
+    QSpinBox* spinBox(CameraFeatureId id) const;
+    QSlider* slider(CameraFeatureId id) const;
+    QCheckBox* autoBox(CameraFeatureId id) const;
+    QPushButton* allAutoOffButton() const { return allAutoOff_; }
+    QPushButton* startButton() const { return start_; }
+    QPushButton* stopButton() const { return stop_; }
+    QPushButton* revertButton() const { return revert_; }
+    QString statusText() const;
+
+signals:
+    // After each calibration iteration, for plots.
+    void calibrationIteration(int iteration, double msv, double u, double v, double black);
+    // When the calibration ends: converged or not, and the status line's text.
+    void calibrationFinished(bool converged, const QString& text);
+
+private:
+    struct Row {
+        QSlider* slider = nullptr;
+        QSpinBox* spin = nullptr;
+        QCheckBox* automatic = nullptr;
+    };
+    void rebuild();
+    void write(CameraFeatureId id, int value);
+    void setAuto(CameraFeatureId id, bool on);
+    void allAutoOff();
+    void startCalibration();
+    void stopCalibration(const QString& why);
+    void stepCalibration();
+    void revertCalibration();
+    void setStatus(const QString& text, bool problem);
+    void updateButtons();
+
+    Camera* camera_ = nullptr;
+    CameraAutoOptions options_;
+    cv::Mat usedMask_;
+    std::map<CameraFeatureId, Row> rows_;
+    QWidget* rowsBox_ = nullptr;
+    QPushButton* allAutoOff_ = nullptr;
+    QPushButton* start_ = nullptr;
+    QPushButton* stop_ = nullptr;
+    QPushButton* revert_ = nullptr;
+    QLabel* status_ = nullptr;
+    QTimer stepTimer_;
+    std::unique_ptr<CameraAutoCalibration> calibration_;
+    bool refreshing_ = false;  // controls being set from the camera: no writes back
+};
+
+}  // namespace omnitune
