@@ -2,6 +2,7 @@
 // growing and cutting boxes, the sampled area of a gesture, masked samples counted, the magic
 // wand, class shares with overlaps, and the H-S / V histograms.
 #include "calib/colour/BoxFit.h"
+#include "calib/colour/ClassSampling.h"
 #include "calib/colour/ClassShares.h"
 #include "calib/colour/ColourSamples.h"
 #include "calib/colour/HsvHistogram.h"
@@ -146,6 +147,36 @@ private slots:
         const BoxCut gone = cutBox(box(50, 50, 10, 10, 10, 10), {{50, 10, 10}});
         QVERIFY(gone.changed);
         QVERIFY(!gone.box.has_value());
+    }
+
+    void classSampling()
+    {
+        // Adding to a class without boxes makes one; adding again grows the chosen box.
+        std::vector<HsvRange> boxes;
+        SampleEdit e = addSamples(boxes, 0, huesAt({20, 22}));
+        QVERIFY(e.changed);
+        QCOMPARE(int(boxes.size()), 1);
+        e = addSamples(boxes, 0, huesAt({25}));
+        QCOMPARE(boxes[0].hMax, 25);
+        QVERIFY(!addSamples(boxes, 0, huesAt({21})).changed);  // already covered
+        e = addSamples(boxes, -1, huesAt({100}));               // "new box"
+        QCOMPARE(e.box, 1);
+        QCOMPARE(int(boxes.size()), 2);
+
+        // Removing cuts the boxes that hold samples and drops a box with nothing left.
+        e = removeSamples(boxes, huesAt({100}));
+        QVERIFY(e.changed);
+        QCOMPARE(e.boxesDropped, 1);
+        QCOMPARE(e.samplesOut, 1);
+        QCOMPARE(int(boxes.size()), 1);
+        // The last box stays, as it was, when everything of it was sampled.
+        std::vector<HsvRange> one = {box(50, 50, 200, 200, 200, 200)};
+        e = removeSamples(one, huesAt({50}));
+        QVERIFY(e.lastBoxKept);
+        QVERIFY(!e.changed);
+        QCOMPARE(int(one.size()), 1);
+        QCOMPARE(one[0].hMin, 50);
+        QCOMPARE(e.samplesOut, 0);
     }
 
     void gestureAreas()

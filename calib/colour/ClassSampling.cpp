@@ -1,0 +1,62 @@
+#include "calib/colour/ClassSampling.h"
+
+#include "calib/colour/ClassShares.h"
+
+namespace omnitune {
+
+namespace {
+
+bool sameBox(const HsvRange& a, const HsvRange& b)
+{
+    return a.enabled == b.enabled && a.hMin == b.hMin && a.hMax == b.hMax && a.sMin == b.sMin && a.sMax == b.sMax &&
+           a.vMin == b.vMin && a.vMax == b.vMax;
+}
+
+}  // namespace
+
+SampleEdit addSamples(std::vector<HsvRange>& boxes, int box, const std::vector<Hsv>& samples, const BoxFitOptions& o)
+{
+    SampleEdit res;
+    const std::optional<HsvRange> fitted = fitBox(samples, o);
+    if (!fitted) return res;
+    if (box < 0 || box >= int(boxes.size())) {
+        boxes.push_back(*fitted);
+        res.box = int(boxes.size()) - 1;
+        res.changed = true;
+        return res;
+    }
+    const HsvRange grown = growBox(boxes[std::size_t(box)], samples, o);
+    res.box = box;
+    res.changed = !sameBox(grown, boxes[std::size_t(box)]);
+    boxes[std::size_t(box)] = grown;
+    return res;
+}
+
+SampleEdit removeSamples(std::vector<HsvRange>& boxes, const std::vector<Hsv>& samples, const BoxFitOptions& o)
+{
+    SampleEdit res;
+    int heldBefore = 0;
+    for (const Hsv& p : samples) heldBefore += boxesContain(boxes, p.h, p.s, p.v) ? 1 : 0;
+    std::vector<HsvRange> kept;
+    for (const HsvRange& b : boxes) {
+        const BoxCut cut = cutBox(b, samples, o);
+        res.changed = res.changed || cut.changed;
+        if (cut.box) kept.push_back(*cut.box);
+        else ++res.boxesDropped;
+    }
+    if (kept.empty() && !boxes.empty()) {
+        // Everything the class holds was sampled: keep its last box rather than make a class the
+        // config refuses; the user removes the class or a box by hand.
+        kept.push_back(boxes.back());
+        --res.boxesDropped;
+        res.lastBoxKept = true;
+        res.changed = boxes.size() > 1;
+    }
+    boxes = std::move(kept);
+    int heldAfter = 0;
+    for (const Hsv& p : samples) heldAfter += boxesContain(boxes, p.h, p.s, p.v) ? 1 : 0;
+    res.samplesOut = heldBefore - heldAfter;
+    return res;
+}
+
+}  // namespace omnitune
