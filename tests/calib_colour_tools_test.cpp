@@ -4,6 +4,7 @@
 #include "calib/colour/BoxFit.h"
 #include "calib/colour/ClassSampling.h"
 #include "calib/colour/ClassShares.h"
+#include "calib/colour/ClassView.h"
 #include "calib/colour/ColourSamples.h"
 #include "calib/colour/HsvHistogram.h"
 #include "calib/colour/HsvImage.h"
@@ -279,6 +280,26 @@ private slots:
         // A class of two boxes claims both.
         const ClassShares two = classShares(hsv, used, {{box(55, 65), box(0, 5, 0, 10)}});
         QCOMPARE(two.counts[0], 2);
+    }
+
+    void classViewDimsAndFlags()
+    {
+        cv::Mat segmented(2, 4, CV_8UC3, cv::Scalar(0, 160, 0));
+        cv::Mat classes(2, 4, CV_8UC1, cv::Scalar(3));
+        classes.at<std::uint8_t>(0, 1) = 5;
+        cv::Mat overlap(2, 4, CV_8UC1, cv::Scalar(0));
+        overlap.at<std::uint8_t>(1, 3) = 255;
+        const cv::Mat all = classView(segmented, classes, overlap, {});
+        QCOMPARE(cv::countNonZero(all.reshape(1) != segmented.reshape(1)), 0);  // nothing asked: unchanged
+        ClassViewOptions only;
+        only.onlyClass = 5;
+        const cv::Mat one = classView(segmented, classes, overlap, only);
+        QCOMPARE(one.at<cv::Vec3b>(0, 1), cv::Vec3b(0, 160, 0));  // the class shown as it is
+        QCOMPARE(one.at<cv::Vec3b>(0, 0), cv::Vec3b(0, 40, 0));   // the others dimmed
+        ClassViewOptions flag;
+        flag.flagOverlaps = true;
+        const cv::Vec3b flagged = classView(segmented, classes, overlap, flag).at<cv::Vec3b>(1, 3);
+        QVERIFY(flagged == cv::Vec3b(255, 255, 255) || flagged == cv::Vec3b(0, 0, 255));
     }
 
     void histograms()
