@@ -170,14 +170,17 @@ private slots:
         QCOMPARE(e.boxesDropped, 1);
         QCOMPARE(e.samplesOut, 1);
         QCOMPARE(int(boxes.size()), 1);
-        // The last box stays, as it was, when everything of it was sampled.
+        // Nothing left: the last box stays, switched off, and the next samples make it anew.
         std::vector<HsvRange> one = {box(50, 50, 200, 200, 200, 200)};
         e = removeSamples(one, huesAt({50}));
-        QVERIFY(e.lastBoxKept);
-        QVERIFY(!e.changed);
+        QVERIFY(e.lastBoxOff);
+        QVERIFY(e.changed);
+        QCOMPARE(e.samplesOut, 1);
         QCOMPARE(int(one.size()), 1);
-        QCOMPARE(one[0].hMin, 50);
-        QCOMPARE(e.samplesOut, 0);
+        QVERIFY(!one[0].enabled);
+        addSamples(one, 0, huesAt({90}));
+        QVERIFY(one[0].enabled);
+        QCOMPARE(one[0].hMin, 90);
     }
 
     void gestureAreas()

@@ -45,12 +45,13 @@ SampleEdit removeSamples(std::vector<HsvRange>& boxes, const std::vector<Hsv>& s
         else ++res.boxesDropped;
     }
     if (kept.empty() && !boxes.empty()) {
-        // Everything the class holds was sampled: keep its last box rather than make a class the
-        // config refuses; the user removes the class or a box by hand.
-        kept.push_back(boxes.back());
+        // Nothing left of the class: one box stays, off, so the config still takes the class
+        // and the next samples added make the box anew (growBox treats an off box as empty).
+        HsvRange off = boxes.back();
+        off.enabled = false;
+        kept.push_back(off);
         --res.boxesDropped;
-        res.lastBoxKept = true;
-        res.changed = boxes.size() > 1;
+        res.lastBoxOff = true;
     }
     boxes = std::move(kept);
     int heldAfter = 0;

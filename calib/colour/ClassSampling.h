@@ -1,8 +1,8 @@
 #pragma once
 // What sampling does to a colour class (its list of HSV boxes): adding samples grows one box,
 // removing them cuts every box that holds some (BoxFit.h). A class never loses its last box
-// here (a class without a box is refused by the config); removing everything a class holds
-// leaves its last box as it was and says so.
+// here (a class without a box is refused by the config): when removing leaves nothing of it,
+// it stays as a box that is off (matches nothing), which the next added samples replace.
 #include "calib/colour/BoxFit.h"
 
 #include <vector>
@@ -13,7 +13,7 @@ struct SampleEdit {
     bool changed = false;     // the boxes differ from before
     int box = -1;             // add: the box that grew (or was made)
     int boxesDropped = 0;     // remove: boxes that had nothing left and went
-    bool lastBoxKept = false; // remove: the class's last box would have gone; it was kept as it was
+    bool lastBoxOff = false;  // remove: nothing was left of the class's boxes; one stays, off
     int samplesOut = 0;       // remove: samples that the class held before and does not now
 };
 
