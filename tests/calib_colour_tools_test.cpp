@@ -319,6 +319,12 @@ private slots:
         QCOMPARE(h.hs.at<int>(10, 5), 1);
         QCOMPARE(h.v[90], 4);
         QCOMPARE(h.v[250], 1);
+        const cv::Mat plane = hsPlaneImage(h);
+        QCOMPARE(plane.size(), cv::Size(180, 256));
+        QCOMPARE(plane.at<cv::Vec3b>(255 - 100, 100), cv::Vec3b(0, 0, 0));  // no pixel there
+        const cv::Vec3b green = plane.at<cv::Vec3b>(255 - 200, 60);         // the most common colour, full bright
+        QCOMPARE(int(green[1]), 255);
+        QVERIFY(green[0] < 100 && green[2] < 100);
     }
 };
 

@@ -16,4 +16,8 @@ struct HsvHistogram {
 // `hsv`: the frame in OpenCV HSV; `used`: CV_8UC1, non-zero = processed (empty: every pixel).
 HsvHistogram hsvHistogram(const cv::Mat& hsv, const cv::Mat& used);
 
+// The H-S plane as a picture (BGR, 180 columns for H, 256 rows for S with S 255 on top): each
+// cell in its own hue and saturation, as bright as the log of its pixel count (black: none).
+cv::Mat hsPlaneImage(const HsvHistogram& histogram);
+
 }  // namespace omnitune
