@@ -248,16 +248,25 @@ int runColours(const CommandLine& cl, const std::string& out)
     const Geometry geometry(config->geometry, config->mask);
     const AutoColourResult r = autoColour(frames.images, geometry, config->colors);
     if (!r.ok()) return fail(*r.error);
-    const auto range = [&](const ColorLutOptions& c, ColorClass k) { return hsvText(c.ranges[std::size_t(k)]); };
+    // The classes autoColour sets: the first of each role, before and after.
+    const auto boxes = [](const ColorLutOptions& c, ColourRole role) {
+        for (const ColourClassDef& k : c.classes) {
+            if (k.role != role) continue;
+            std::string text = k.name + "  ";
+            for (std::size_t i = 0; i < k.boxes.size(); ++i) text += (i ? " | " : "") + hsvText(k.boxes[i]);
+            return text;
+        }
+        return std::string("(no class with role ") + std::string(colourRoleName(role)) + ")";
+    };
     std::cout << "colours: " << frames.images.size() << " frame(s) of " << in->source << "\n"
               << "  carpet   hue " << r.carpetHue << ", median S " << r.carpetS << ", median V " << r.carpetV << ", "
               << fixedText(r.carpetPct, 1) << " % of the used area\n"
-              << "  green    " << range(r.colors, ColorClass::Green) << "  (was " << range(config->colors, ColorClass::Green)
+              << "  field    " << boxes(r.colors, ColourRole::Field) << "  (was " << boxes(config->colors, ColourRole::Field)
               << ")\n"
-              << "  white    " << range(r.colors, ColorClass::White) << "  (was " << range(config->colors, ColorClass::White)
+              << "  line     " << boxes(r.colors, ColourRole::Line) << "  (was " << boxes(config->colors, ColourRole::Line)
               << ")\n"
               << "  black    V <= " << fixedText(r.colors.blackVRatio, 2) << " x the carpet's V per frame (black_relative; "
-              << range(r.colors, ColorClass::Black) << " when no carpet is seen)\n";
+              << boxes(r.colors, ColourRole::Black) << " when no carpet is seen)\n";
     for (const auto& n : r.notes) std::cout << "  note: " << n << "\n";
     config->colors = r.colors;
     return save(*config, out);

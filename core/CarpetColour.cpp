@@ -1,6 +1,5 @@
 #include "core/CarpetColour.h"
 
-#include "core/ColorClass.h"
 #include "core/Geometry.h"
 
 #include <algorithm>
@@ -8,8 +7,8 @@
 
 namespace omnitune {
 
-CarpetColour CarpetColour::around(const FrameColour& frame, const cv::Mat& classes, const Geometry& geometry, int x,
-                                  int y, double inner, double outer)
+CarpetColour CarpetColour::around(const FrameColour& frame, const cv::Mat& classes, const Geometry& geometry,
+                                  const ColourRoles& roles, int x, int y, double inner, double outer)
 {
     CarpetColour cc;
     const int reach = int(std::ceil(outer));
@@ -26,7 +25,7 @@ CarpetColour CarpetColour::around(const FrameColour& frame, const cv::Mat& class
             const int xx = x + dx;
             const double d2 = double(dx) * dx + double(dy) * dy;
             if (xx < 0 || xx >= classes.cols || d2 < in2 || d2 > out2) continue;
-            if (cls[xx] != std::uint8_t(ColorClass::Green) || !geometry.isUsed(xx, yy)) continue;
+            if (!roles.field(cls[xx]) || !geometry.isUsed(xx, yy)) continue;
             const Hsv c = frame.hsvAt(xx, yy);
             sh += c.h;
             ss += c.s;

@@ -2,8 +2,9 @@
 // The carpet's own colour next to a candidate, so that green on the ball (panels of a
 // green-and-white ball, its shaded side) is told from the carpet: the colour class says only
 // "green", this says "the green of the carpet right here". Measured per candidate from the
-// green-class pixels of a ring around it, so that vignetting, uneven light and each venue's
+// field-class pixels of a ring around it, so that vignetting, uneven light and each venue's
 // carpet shade need no calibration.
+#include "core/ColourClasses.h"
 #include "core/FrameColour.h"
 
 #include <opencv2/core.hpp>
@@ -24,9 +25,9 @@ struct CarpetTolerance {
 class CarpetColour {
 public:
     CarpetColour() = default;
-    // The green-class, processed pixels between `inner` and `outer` px around (x, y).
-    static CarpetColour around(const FrameColour& frame, const cv::Mat& classes, const Geometry& geometry, int x,
-                               int y, double inner, double outer);
+    // The processed pixels of a field class between `inner` and `outer` px around (x, y).
+    static CarpetColour around(const FrameColour& frame, const cv::Mat& classes, const Geometry& geometry,
+                               const ColourRoles& roles, int x, int y, double inner, double outer);
 
     // Enough carpet was seen around the candidate to judge colours by it.
     bool valid() const { return samples_ >= kMinSamples; }

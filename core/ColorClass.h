@@ -1,33 +1,21 @@
 #pragma once
-// The colour classes of the segmentation. Ids are what the segmented image stores.
-#include <array>
+// A colour class id, as the segmented image stores it: 0 is no class, 1..N the classes of
+// colors.classes in their list order (core/ColourClasses.h, at most 15). The named values are
+// the ids of the default classes, for tests and for code that speaks of the thesis' classes;
+// the detector itself asks a class's role (ColourRoles), never its id or name.
 #include <cstdint>
-#include <string_view>
 
 namespace omnitune {
 
 enum class ColorClass : std::uint8_t {
     Unknown = 0,  // no class matched (or pixel not processed)
-    Green,        // field carpet
-    White,        // field lines
     Black,        // obstacles (robots)
+    White,        // field lines
+    Green,        // field carpet
     Orange,       // the classic orange ball
     Cyan,         // team marker
     Magenta,      // team marker
+    Yellow,       // a yellow ball (off by default)
 };
-
-inline constexpr int kColorClassCount = 7;
-
-// Classes in the order the LUT tests them: the first range that contains a colour wins.
-// Black and white come first because their ranges ignore hue.
-inline constexpr std::array<ColorClass, 6> kClassificationOrder = {
-    ColorClass::Black, ColorClass::White, ColorClass::Green,
-    ColorClass::Orange, ColorClass::Cyan, ColorClass::Magenta};
-
-// Lower-case key used in config.yml ("green", "white", ...).
-std::string_view colorClassKey(ColorClass c);
-
-// BGR false colour used for the segmented stage image.
-std::array<std::uint8_t, 3> colorClassDisplayBgr(ColorClass c);
 
 }  // namespace omnitune

@@ -10,24 +10,10 @@
 
 namespace omnitune {
 
-std::array<HsvRange, kColorClassCount> ColorLutOptions::defaultRanges()
+bool operator==(const ColorLutOptions& a, const ColorLutOptions& b)
 {
-    std::array<HsvRange, kColorClassCount> r{};
-    r[std::size_t(ColorClass::Unknown)] = HsvRange{false, 0, 179, 0, 255, 0, 255};
-    r[std::size_t(ColorClass::Black)] = HsvRange{true, 0, 179, 0, 255, 0, 60};
-    r[std::size_t(ColorClass::White)] = HsvRange{true, 0, 179, 0, 50, 170, 255};
-    r[std::size_t(ColorClass::Green)] = HsvRange{true, 35, 85, 60, 255, 40, 255};
-    r[std::size_t(ColorClass::Orange)] = HsvRange{true, 5, 22, 120, 255, 80, 255};
-    r[std::size_t(ColorClass::Cyan)] = HsvRange{true, 86, 105, 120, 255, 80, 255};
-    r[std::size_t(ColorClass::Magenta)] = HsvRange{true, 140, 170, 100, 255, 80, 255};
-    return r;
-}
-
-ColorClass classifyHsv(const std::array<HsvRange, kColorClassCount>& ranges, int h, int s, int v)
-{
-    for (ColorClass c : kClassificationOrder)
-        if (ranges[std::size_t(c)].contains(h, s, v)) return c;
-    return ColorClass::Unknown;
+    return a.classes == b.classes && a.bits == b.bits && a.blackRelative == b.blackRelative &&
+           a.blackVRatio == b.blackVRatio;
 }
 
 std::array<std::uint8_t, 3> yuvToBgr(int y, int u, int v)
@@ -84,43 +70,53 @@ void ColorLut::compile(const ColorLutOptions& options)
     cv::Mat yuvHsv;
     cv::cvtColor(bgrGrid, bgrHsv, cv::COLOR_BGR2HSV);
     cv::cvtColor(yuvGrid, yuvHsv, cv::COLOR_BGR2HSV);
-    // Relative black: the table holds the class without black and without green's V floor,
-    // with the V band beside it; segment() decides black per frame.
+    // Relative black: the table holds the class without the black classes and without the field
+    // classes' V floor; segment() decides black per frame from each pixel's V band.
     relative_ = options.blackRelative;
     blackVRatio_ = options.blackVRatio;
-    const HsvRange& black = options.ranges[std::size_t(ColorClass::Black)];
-    fallbackBlackV_ = black.enabled ? black.vMax : -1;
-    auto ranges = options.ranges;
-    if (relative_) {
-        ranges[std::size_t(ColorClass::Black)].enabled = false;
-        ranges[std::size_t(ColorClass::Green)].vMin = 0;
+    fallbackBlackV_ = -1;
+    blackId_ = 0;
+    fieldMask_ = 0;
+    ColourClasses classes = options.classes;
+    for (std::size_t i = 0; i < classes.size() && i < std::size_t(kMaxColourClasses); ++i) {
+        ColourClassDef& c = classes[i];
+        if (c.role == ColourRole::Field) fieldMask_ |= 1u << (i + 1);
+        if (c.role == ColourRole::Black && c.enabled) {
+            if (blackId_ == 0) blackId_ = std::uint8_t(i + 1);
+            for (const HsvRange& box : c.boxes)
+                if (box.enabled) fallbackBlackV_ = std::max(fallbackBlackV_, box.vMax);
+        }
+        if (!relative_) continue;
+        if (c.role == ColourRole::Black) c.enabled = false;
+        if (c.role == ColourRole::Field)
+            for (HsvRange& box : c.boxes) box.vMin = 0;
     }
-    auto entry = [&](const cv::Vec3b& hsv) {
-        const auto cls = std::uint8_t(classifyHsv(ranges, hsv[0], hsv[1], hsv[2]));
-        return relative_ ? std::uint8_t((cls << kBandBits) | (hsv[2] >> 3)) : cls;
-    };
+    if (blackId_ == 0) fallbackBlackV_ = -1;
+    for (int v = 0; v < 256; ++v) vBand_[std::size_t(v)] = std::uint8_t((((v >> shift_) << shift_) + half) >> 3);
     bgrTable_.assign(std::size_t(entries), 0);
     yuvTable_.assign(std::size_t(entries), 0);
+    yuvBand_.assign(relative_ ? std::size_t(entries) : 0, 0);
     for (int i = 0; i < entries; ++i) {
-        bgrTable_[std::size_t(i)] = entry(bgrHsv.at<cv::Vec3b>(0, i));
-        yuvTable_[std::size_t(i)] = entry(yuvHsv.at<cv::Vec3b>(0, i));
-    }
-    if (relative_) {
-        fixedRemap_ = remapFor(fallbackBlackV_);
-    } else {
-        for (int b = 0; b < 256; ++b) fixedRemap_[std::size_t(b)] = std::uint8_t(b);
+        const cv::Vec3b& h = bgrHsv.at<cv::Vec3b>(0, i);
+        bgrTable_[std::size_t(i)] = std::uint8_t(classifyHsv(classes, h[0], h[1], h[2]));
+        const cv::Vec3b& y = yuvHsv.at<cv::Vec3b>(0, i);
+        yuvTable_[std::size_t(i)] = std::uint8_t(classifyHsv(classes, y[0], y[1], y[2]));
+        if (relative_) yuvBand_[std::size_t(i)] = std::uint8_t(y[2] >> 3);
     }
 }
 
-std::array<std::uint8_t, 256> ColorLut::remapFor(int blackV) const
+std::vector<std::uint8_t> ColorLut::bgrTable() const
 {
-    std::array<std::uint8_t, 256> remap{};
-    for (int b = 0; b < 256; ++b) {
-        const int cls = b >> kBandBits;
-        const int bandCentre = ((b & ((1 << kBandBits) - 1)) << 3) + 4;
-        remap[std::size_t(b)] = bandCentre <= blackV ? std::uint8_t(ColorClass::Black) : std::uint8_t(cls);
+    std::vector<std::uint8_t> out = bgrTable_;
+    if (!relative_) return out;
+    const int levels = 1 << bits_;
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const int b = int((i >> (2 * bits_)) & std::size_t(levels - 1)) << shift_;
+        const int g = int((i >> bits_) & std::size_t(levels - 1)) << shift_;
+        const int r = int(i & std::size_t(levels - 1)) << shift_;
+        out[i] = std::uint8_t(classifyBgr(std::uint8_t(b), std::uint8_t(g), std::uint8_t(r)));
     }
-    return remap;
+    return out;
 }
 
 void ColorLut::segment(const cv::Mat& frame, PixelFormat format, const std::vector<RowSpan>& spans,
@@ -152,15 +148,24 @@ void ColorLut::segment(const cv::Mat& frame, PixelFormat format, const std::vect
     if (stats) *stats = SegmentStats{};
     if (!relative_) return;
 
-    // The carpet's V: median V band of the green pixels on every 4th row, every 2nd column
+    // The V band of the pixel at (x, y): computed from BGR, read from a second table for UYVY.
+    const bool bgr = format == PixelFormat::Bgr8;
+    auto bandAt = [&](int x, int y) {
+        if (bgr) {
+            const std::uint8_t* p = frame.ptr<std::uint8_t>(y) + 3 * x;
+            return int(bgrBand(p[0], p[1], p[2]));
+        }
+        const std::uint8_t* pair = frame.ptr<std::uint8_t>(y) + 2 * (x & ~1);
+        return int(yuvBand_[index((x & 1) ? pair[3] : pair[1], pair[0], pair[2])]);
+    };
+    // The carpet's V: median V band of the field pixels on every 4th row, every 2nd column
     // (~1/8 of the ring: enough for a median, cheap next to the table reads).
-    std::array<int, 1 << kBandBits> bands{};
-    const int greenCode = int(ColorClass::Green);
+    std::array<int, 32> bands{};
     for (const RowSpan& s : spans) {
         if (s.y & 3) continue;
         const std::uint8_t* row = classes.ptr<std::uint8_t>(s.y);
         for (int x = s.x0; x < s.x1; x += 2)
-            if ((row[x] >> kBandBits) == greenCode) ++bands[std::size_t(row[x] & ((1 << kBandBits) - 1))];
+            if ((fieldMask_ >> row[x]) & 1u) ++bands[std::size_t(bandAt(x, s.y))];
     }
     int total = 0;
     for (int n : bands) total += n;
@@ -175,10 +180,14 @@ void ColorLut::segment(const cv::Mat& frame, PixelFormat format, const std::vect
         carpetV = (band << 3) + 4;
         blackV = int(std::lround(blackVRatio_ * carpetV));
     }
-    const std::array<std::uint8_t, 256> remap = remapFor(blackV);
-    for (const RowSpan& s : spans) {
-        std::uint8_t* out = classes.ptr<std::uint8_t>(s.y);
-        for (int x = s.x0; x < s.x1; ++x) out[x] = remap[out[x]];
+    if (blackV >= 0) {
+        std::array<bool, 32> black{};
+        for (int b = 0; b < 32; ++b) black[std::size_t(b)] = isBlackBand(b, blackV);
+        for (const RowSpan& s : spans) {
+            std::uint8_t* out = classes.ptr<std::uint8_t>(s.y);
+            for (int x = s.x0; x < s.x1; ++x)
+                if (black[std::size_t(bandAt(x, s.y))]) out[x] = blackId_;
+        }
     }
     if (stats) *stats = SegmentStats{carpetV, blackV};
 }

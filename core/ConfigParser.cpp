@@ -1,5 +1,6 @@
 #include "core/ConfigParser.h"
 
+#include "core/ColourClassesYaml.h"
 #include "core/ConfigSchema.h"
 #include "core/RegularFile.h"
 #include "core/RingCoverage.h"
@@ -71,15 +72,16 @@ std::optional<ConfigValue> readValue(const ConfigKey& k, const cv::FileNode& n, 
 }
 
 // Leaf keys present in the file but unknown to the schema.
-void collectUnknown(const cv::FileNode& node, const std::string& prefix, std::vector<std::string>& unknown)
+void collectUnknown(const cv::FileNode& node, const std::string& prefix, bool oldColourForm,
+                    std::vector<std::string>& unknown)
 {
     static const std::set<std::string> topLevel = {"schema", "saved_by", "complete"};
     for (const cv::FileNode& child : node) {
         const std::string path = prefix.empty() ? child.name() : prefix + "." + child.name();
         if (prefix.empty() && topLevel.count(path)) continue;
-        if (findConfigKey(path)) continue;
+        if (findConfigKey(path) || isColourClassesPath(path, oldColourForm)) continue;
         if (child.isMap()) {
-            collectUnknown(child, path, unknown);
+            collectUnknown(child, path, oldColourForm, unknown);
             continue;
         }
         unknown.push_back(path);
@@ -143,8 +145,16 @@ ConfigLoad parseConfig(const std::string& text, const std::string& fileName)
         if (!value) return fail(ConfigIssueKind::WrongType, k.path, why);
         k.set(out.config, *value);
     }
+    // The class list is no scalar key: its own reader (which also reads the old per-class keys).
+    ColourClassesRead classes = readColourClasses(root["colors"], text, fileName);
+    if (classes.error) {
+        out.error = classes.error;
+        return out;
+    }
+    out.config.colors.classes = std::move(classes.classes);
+    for (ConfigIssue& w : classes.warnings) out.warnings.push_back(std::move(w));
     std::vector<std::string> unknown;
-    collectUnknown(root, "", unknown);
+    collectUnknown(root, "", classes.oldForm, unknown);
     for (const std::string& u : unknown)
         out.warnings.push_back({ConfigIssueKind::UnknownKey, fileName, 0, u, "unknown key, ignored (a typo?)"});
 

@@ -1,5 +1,6 @@
 #include "core/ConfigSchema.h"
 
+#include "core/ColourClassesYaml.h"
 #include "core/RingCoverage.h"
 #include "core/YamlText.h"
 
@@ -81,34 +82,16 @@ std::vector<ConfigKey> buildSchema()
                        "LUT index bits per channel: the table has 2^(3*bits) entries; more bits leave the L2 cache (see docs/performance.md), fewer coarsen class borders",
                        [](auto& c) -> auto& { return c.colors.bits; }));
     s.push_back(boolKey("colors.black_relative", false,
-                        "Black relative to each frame's carpet: black is what is darker than black_v_ratio x the carpet's median V, "
-                        "whatever its hue, and green has no V floor (black.v_min/v_max and green.v_min unused; black.v_max "
-                        "only when a frame shows no carpet). Off: thesis, black is its fixed HSV box, which in dim "
+                        "Black relative to each frame's carpet: black (the first class of role black) is what is darker than "
+                        "black_v_ratio x the median V of the field classes, whatever its hue, and field classes have no V floor "
+                        "(the black classes' boxes and the field boxes' V min unused; the black boxes' highest V max only when a "
+                        "frame shows no carpet). Off: thesis, black is its fixed HSV box, which in dim "
                         "light turns the carpet into black speckle (simulated dim tours: 0-2 % of balls found, 82-90 % with it on)",
                         [](auto& c) -> auto& { return c.colors.blackRelative; }));
     s.push_back(doubleKey("colors.black_v_ratio", "ratio", 0.05, 0.95, false,
                           "With black_relative: black is V <= this x the carpet's median V (measured per frame on 1/8 of the "
                           "ring's pixels); higher takes in shadows and dark carpet, lower leaves dim robots non-black",
                           [](auto& c) -> auto& { return c.colors.blackVRatio; }));
-    for (ColorClass cls : kClassificationOrder) {
-        const std::string p = "colors." + std::string(colorClassKey(cls)) + ".";
-        const std::size_t i = std::size_t(cls);
-        const std::string name(colorClassKey(cls));
-        s.push_back(boolKey(p + "enabled", false, "Whether the " + name + " class is used at all",
-                            [i](auto& c) -> auto& { return c.colors.ranges[i].enabled; }));
-        s.push_back(intKey(p + "h_min", "hue", 0, 179, false, "Lowest hue of " + name + " (OpenCV scale 0..179); above h_max the range wraps through 0",
-                           [i](auto& c) -> auto& { return c.colors.ranges[i].hMin; }));
-        s.push_back(intKey(p + "h_max", "hue", 0, 179, false, "Highest hue of " + name,
-                           [i](auto& c) -> auto& { return c.colors.ranges[i].hMax; }));
-        s.push_back(intKey(p + "s_min", "0..255", 0, 255, false, "Lowest saturation of " + name,
-                           [i](auto& c) -> auto& { return c.colors.ranges[i].sMin; }));
-        s.push_back(intKey(p + "s_max", "0..255", 0, 255, false, "Highest saturation of " + name,
-                           [i](auto& c) -> auto& { return c.colors.ranges[i].sMax; }));
-        s.push_back(intKey(p + "v_min", "0..255", 0, 255, false, "Lowest value (brightness) of " + name,
-                           [i](auto& c) -> auto& { return c.colors.ranges[i].vMin; }));
-        s.push_back(intKey(p + "v_max", "0..255", 0, 255, false, "Highest value (brightness) of " + name,
-                           [i](auto& c) -> auto& { return c.colors.ranges[i].vMax; }));
-    }
 
     // geometry
     s.push_back(intKey("geometry.image_width", "px", 16, 4096, true, "Frame width this geometry belongs to; other frame sizes are refused",
@@ -339,23 +322,10 @@ std::vector<ConfigKey> buildSchema()
                           "carpet_by_colour: brightness is judged too when above 0 (never tighter than this); tells a shaded green "
                           "panel from the carpet, but also a shadow on the carpet",
                           [](auto& c) -> auto& { return c.validation.carpetTolerance.value; }));
-    {
-        ConfigKey hint{"validation.ball_hint_class", ValueType::Choice, "", 0, 0,
-                       "The ball's colour class when known: where enough of its square has it (ball_hint_min_pct), the non-green and "
-                       "non-black tests are passed; none: no hint",
-                       {"none", "white", "black", "orange", "cyan", "magenta"}, false, {}, {}};
-        hint.get = [](const Config& c) {
-            const ColorClass h = c.validation.ballHint;
-            return ConfigValue(std::string(h == ColorClass::Unknown ? "none" : colorClassKey(h)));
-        };
-        hint.set = [](Config& c, const ConfigValue& v) {
-            const std::string& name = std::get<std::string>(v);
-            c.validation.ballHint = ColorClass::Unknown;
-            for (ColorClass k : kClassificationOrder)
-                if (colorClassKey(k) == name && k != ColorClass::Green) c.validation.ballHint = k;
-        };
-        s.push_back(std::move(hint));
-    }
+    s.push_back(textKey("validation.ball_hint_class",
+                        "The ball's colour class when known (a class name of colors.classes, not a field class): where enough of its "
+                        "square has it (ball_hint_min_pct), the non-green and non-black tests are passed; none: no hint",
+                        [](auto& c) -> auto& { return c.validation.ballHint; }));
     s.push_back(doubleKey("validation.ball_hint_min_pct", "%", 0, 100, false,
                           "ball_hint_class: share of the square's processed pixels of that class that counts as the ball's colour",
                           [](auto& c) -> auto& { return c.validation.ballHintMinPct; }));
@@ -513,11 +483,13 @@ std::vector<ConfigIssue> checkConfig(const Config& c, const std::string& file)
         inconsistent("opencv_hough.min_radius_ratio", "min_radius_ratio must be below max_radius_ratio");
     if (c.opencvHough.minRadius > c.opencvHough.maxRadius)
         inconsistent("opencv_hough.min_radius", "min_radius is above max_radius");
-    for (ColorClass cls : kClassificationOrder) {
-        const HsvRange& r = c.colors.ranges[std::size_t(cls)];
-        const std::string p = "colors." + std::string(colorClassKey(cls));
-        if (r.sMin > r.sMax) inconsistent(p + ".s_min", "s_min is above s_max");
-        if (r.vMin > r.vMax) inconsistent(p + ".v_min", "v_min is above v_max");
+    for (ConfigIssue& i : checkColourClasses(c.colors.classes, file)) out.push_back(std::move(i));
+    if (c.validation.ballHint != "none") {
+        const int hint = findColourClass(c.colors.classes, c.validation.ballHint);
+        if (hint < 0)
+            inconsistent("validation.ball_hint_class", "\"" + c.validation.ballHint + "\" is no class of colors.classes (or none)");
+        else if (c.colors.classes[std::size_t(hint)].role == ColourRole::Field)
+            inconsistent("validation.ball_hint_class", "\"" + c.validation.ballHint + "\" is a field class: the ball is never carpet");
     }
     if (!c.mask.empty() && c.mask.type() != CV_8UC1)
         out.push_back(issue(ConfigIssueKind::MaskError, file, "geometry.mask_file",
@@ -535,9 +507,8 @@ std::string configSchemaMarkdown()
 {
     static const std::pair<const char*, const char*> sections[] = {
         {"camera", "Camera settings (IIDC features through libdc1394), in the camera's register units."},
-        {"colors", "Colour classes as HSV ranges in OpenCV's 8-bit scale (H 0..179, S and V 0..255). The first class "
-                   "in the order black, white, green, orange, cyan, magenta whose range holds a colour wins; "
-                   "no match is `unknown`. A hue range with h_min above h_max wraps through 0 (red: 170..10)."},
+        {"colors", "The colour table's size and relative black. The colour classes themselves are the list "
+                   "`colors.classes`, described below the table."},
         {"geometry", "Where the robot is in the image and which pixels are processed."},
         {"sensors", "Radial sensors for line and obstacle search (thesis Fig. 4.3)."},
         {"distance_map", "Image distance (px) to ground distance (m), monotone cubic through the calibration points; "
@@ -581,6 +552,7 @@ std::string configSchemaMarkdown()
             md << "| `" << k.path << "` | " << valueTypeName(k.type) << " | " << k.unit << " | `" << def << "`"
                << (k.fromThesis ? " (thesis)" : "") << " | " << range << " | " << escapeTableCell(k.meaning) << " |\n";
         }
+        if (std::string(name) == "colors") md << colourClassesMarkdown();
     }
     return md.str();
 }

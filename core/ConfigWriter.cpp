@@ -1,5 +1,6 @@
 #include "core/ConfigWriter.h"
 
+#include "core/ColourClassesYaml.h"
 #include "core/ConfigSchema.h"
 
 #include <opencv2/core.hpp>
@@ -81,6 +82,9 @@ std::string serializeConfig(const Config& config)
         auto parts = splitConfigPath(k.path);
         const std::string leaf = parts.back();
         parts.pop_back();
+        // The class list closes the colors section (it is a list, not a schema key).
+        if (!open.empty() && open.front() == "colors" && parts.front() != "colors")
+            out += writeColourClasses(config.colors.classes, std::string(3, ' '));
         std::size_t common = 0;
         while (common < open.size() && common < parts.size() && open[common] == parts[common]) ++common;
         open.resize(common);

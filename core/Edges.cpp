@@ -1,10 +1,10 @@
 #include "core/Edges.h"
 
-#include "core/ColorClass.h"
 #include "core/FillBytes.h"
 #include "core/Geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 
 namespace omnitune {
@@ -21,22 +21,20 @@ std::optional<EdgeInput> parseEdgeInput(std::string_view name)
     return std::nullopt;
 }
 
-void makeBinary(const cv::Mat& classes, const Geometry& geometry, cv::Mat& binary, int whiteLevel)
+void makeBinary(const cv::Mat& classes, const Geometry& geometry, cv::Mat& binary, int whiteLevel,
+                const ColourRoles& roles)
 {
     CV_Assert(classes.type() == CV_8UC1);
     binary.create(classes.size(), CV_8UC1);
     fillBytes(binary, 255);
-    const auto green = std::uint8_t(ColorClass::Green);
-    const auto white = std::uint8_t(ColorClass::White);
     const auto whiteOut = std::uint8_t(whiteLevel & 0xF0);
+    std::array<std::uint8_t, 256> level{};  // class id -> binary value
+    for (int id = 0; id < 256; ++id)
+        level[std::size_t(id)] = roles.field(std::uint8_t(id)) ? 255 : roles.line(std::uint8_t(id)) ? whiteOut : 0;
     for (const RowSpan& s : geometry.spans()) {
         const std::uint8_t* in = classes.ptr<std::uint8_t>(s.y);
         std::uint8_t* out = binary.ptr<std::uint8_t>(s.y);
-        if (whiteOut == 0) {
-            for (int x = s.x0; x < s.x1; ++x) out[x] = in[x] == green ? 255 : 0;
-        } else {
-            for (int x = s.x0; x < s.x1; ++x) out[x] = in[x] == green ? 255 : in[x] == white ? whiteOut : 0;
-        }
+        for (int x = s.x0; x < s.x1; ++x) out[x] = level[in[x]];
     }
 }
 

@@ -2,6 +2,8 @@
 // The edge stage: segmented classes -> binary image (green and unprocessed pixels white,
 // everything else black; thesis "Grayscale Image") -> Canny edges ("Edges Image"). Or, the
 // thesis' solutions 2 and 4, Canny on the grayscale of the camera frame itself.
+#include "core/ColourClasses.h"
+
 #include <opencv2/core.hpp>
 
 #include <cstdint>
@@ -32,9 +34,10 @@ struct EdgeOptions {
     EdgeInput input = EdgeInput::Binary;
 };
 
-// Green -> 255, white -> whiteLevel, other classes -> 0, pixels the geometry does not use -> 255
-// so that the robot body and the mirror rim make no edges.
-void makeBinary(const cv::Mat& classes, const Geometry& geometry, cv::Mat& binary, int whiteLevel = 0);
+// Field classes ("green") -> 255, line classes ("white") -> whiteLevel, other classes -> 0,
+// pixels the geometry does not use -> 255 so that the robot body and the mirror rim make no edges.
+void makeBinary(const cv::Mat& classes, const Geometry& geometry, cv::Mat& binary, int whiteLevel = 0,
+                const ColourRoles& roles = defaultColourRoles());
 
 // The luminance of a BGR or UYVY frame (CV_8UC1), for EdgeInput::Gray; `gray` is reused.
 void makeGray(const cv::Mat& frame, bool uyvy, cv::Mat& gray);

@@ -21,6 +21,7 @@ enum class FileIssueKind {
     UnknownSchema,       // a schema version this build does not read
     Inconsistent,        // keys that contradict each other (low above high, ...)
     MaskError,           // the mask image is missing, unreadable or of the wrong size
+    OldForm,             // warning: keys of an older form, read as before (omnitune-config --upgrade rewrites them)
     // session.yml and the session folder
     NotASession,         // neither session.yml nor frames/, or YAML without `session_format`
     UnknownFormat,       // a session_format this build does not read

@@ -9,7 +9,7 @@
 namespace omnitune {
 
 FrontEnd::FrontEnd(const Config& config)
-    : lut_(config.colors), geometry_(config.geometry, config.mask), edgeOptions_(config.edges)
+    : lut_(config.colors), roles_(config.colors.classes), geometry_(config.geometry, config.mask), edgeOptions_(config.edges)
 {
 }
 
@@ -22,7 +22,7 @@ void FrontEnd::process(const cv::Mat& frame, PixelFormat format, cv::Mat& classe
     fillBytes(classes, 0);
     lut_.segment(frame, format, geometry_.spans(), classes, &stats_);
     const double segmentMs = clock.lap();
-    makeBinary(classes, geometry_, binary, edgeOptions_.whiteLevel);
+    makeBinary(classes, geometry_, binary, edgeOptions_.whiteLevel, roles_);
     if (edgeOptions_.input == EdgeInput::Gray) makeGray(frame, format == PixelFormat::Uyvy, gray_);
     const double binaryMs = clock.lap();
     canny_.detect(edgeSource(binary), edgeOptions_, edges);

@@ -24,6 +24,8 @@ public:
 
     const Geometry& geometry() const { return geometry_; }
     const ColorLut& lut() const { return lut_; }
+    // What each class id of `classes` is used for (config.colors.classes' roles).
+    const ColourRoles& roles() const { return roles_; }
     const EdgeOptions& edgeOptions() const { return edgeOptions_; }
     // The carpet brightness and black threshold of the last frame (relative black only).
     const SegmentStats& segmentStats() const { return stats_; }
@@ -46,6 +48,7 @@ public:
 
 private:
     ColorLut lut_;
+    ColourRoles roles_;
     Geometry geometry_;
     EdgeOptions edgeOptions_;
     CannyDetector canny_;

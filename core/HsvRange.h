@@ -5,7 +5,7 @@
 namespace omnitune {
 
 struct HsvRange {
-    bool enabled = true;  // a disabled class never matches
+    bool enabled = true;  // a disabled box never matches
     int hMin = 0;         // hue lower bound, 0..179
     int hMax = 179;       // hue upper bound, 0..179 (below hMin: wraps through 0)
     int sMin = 0;         // saturation lower bound, 0..255
@@ -19,5 +19,12 @@ struct HsvRange {
         return enabled && containsHue(h) && s >= sMin && s <= sMax && v >= vMin && v <= vMax;
     }
 };
+
+inline bool operator==(const HsvRange& a, const HsvRange& b)
+{
+    return a.enabled == b.enabled && a.hMin == b.hMin && a.hMax == b.hMax && a.sMin == b.sMin && a.sMax == b.sMax &&
+           a.vMin == b.vMin && a.vMax == b.vMax;
+}
+inline bool operator!=(const HsvRange& a, const HsvRange& b) { return !(a == b); }
 
 }  // namespace omnitune

@@ -9,6 +9,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -77,18 +78,20 @@ BallDetection detectionOf(const BallCandidate& c, int index, const GeometryOptio
     return d;
 }
 
-// Classes in their display colours; pixels the geometry does not process in dark grey.
-void paintSegmented(const cv::Mat& classes, const cv::Mat& usedMask, cv::Mat& out)
+// Classes in their display colours (unknown mid grey); pixels the geometry does not process in
+// dark grey.
+void paintSegmented(const cv::Mat& classes, const cv::Mat& usedMask, const ColourClasses& defs, cv::Mat& out)
 {
+    std::array<cv::Vec3b, 256> colour;
+    colour.fill(cv::Vec3b(128, 128, 128));
+    for (std::size_t i = 0; i < defs.size() && i < std::size_t(kMaxColourClasses); ++i)
+        colour[i + 1] = cv::Vec3b(defs[i].display[0], defs[i].display[1], defs[i].display[2]);
     out.create(classes.size(), CV_8UC3);
     for (int y = 0; y < classes.rows; ++y) {
         const std::uint8_t* c = classes.ptr<std::uint8_t>(y);
         const std::uint8_t* u = usedMask.ptr<std::uint8_t>(y);
         cv::Vec3b* row = out.ptr<cv::Vec3b>(y);
-        for (int x = 0; x < classes.cols; ++x) {
-            const auto bgr = colorClassDisplayBgr(static_cast<ColorClass>(c[x]));
-            row[x] = u[x] ? cv::Vec3b(bgr[0], bgr[1], bgr[2]) : cv::Vec3b(40, 40, 40);
-        }
+        for (int x = 0; x < classes.cols; ++x) row[x] = u[x] ? colour[c[x]] : cv::Vec3b(40, 40, 40);
     }
 }
 
@@ -126,7 +129,8 @@ struct Pipeline::Impl {
     void validateFrom(std::size_t first, PipelineResult& r)
     {
         for (std::size_t i = first; i < r.candidates.size(); ++i)
-            validateCandidate(r.candidates[i], r.classes, edges, geometry(), ball, config.validation, colour);
+            validateCandidate(r.candidates[i], r.classes, edges, geometry(), ball, config.validation, colour,
+                              frontEnd.roles());
     }
 
     // Thesis 4.1: candidates from the specific Hough transform, validated.
@@ -167,7 +171,7 @@ struct Pipeline::Impl {
             frame.copyTo(s.acquired);
         else
             convertUyvyToBgr(frame, s.acquired);
-        paintSegmented(r.classes, geometry().usedMask(), s.segmented);
+        paintSegmented(r.classes, geometry().usedMask(), config.colors.classes, s.segmented);
         frontEnd.edgeSource(binary).copyTo(s.grayscale);
         edges.copyTo(s.edges);
         paintVotes(hough.sums(), s.hough);

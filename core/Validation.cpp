@@ -29,6 +29,8 @@ struct Circle {
     const Geometry& geometry;
     const ValidationOptions& options;
     const FrameColour* colour;  // null: colours unknown, every green pixel is carpet
+    const ColourRoles& roles;   // "green": a field class, "black": a black class
+    ColorClass hint;            // options.ballHint's id, Unknown: no hint
     CarpetColour carpet;        // measured around the circle when carpetByColour
 
     bool byColour() const { return colour && options.carpetByColour && carpet.valid(); }
@@ -37,12 +39,12 @@ struct Circle {
     {
         return p.x >= 0 && p.y >= 0 && p.x < classes.cols && p.y < classes.rows && geometry.isUsed(p.x, p.y);
     }
-    ColorClass classAt(cv::Point p) const { return ColorClass(classes.ptr<std::uint8_t>(p.y)[p.x]); }
+    std::uint8_t classAt(cv::Point p) const { return classes.ptr<std::uint8_t>(p.y)[p.x]; }
     bool edgeAt(cv::Point p) const { return edges.ptr<std::uint8_t>(p.y)[p.x] != 0; }
     // A known pixel of the carpet: green, and (carpetByColour) of the carpet's own green.
     bool carpetAt(cv::Point p) const
     {
-        if (classAt(p) != ColorClass::Green) return false;
+        if (!roles.field(classAt(p))) return false;
         return !byColour() || carpet.matches(colour->hsvAt(p.x, p.y), options.carpetTolerance);
     }
     // Carpet lies a little farther out than beyondEdgePx: the border's blend of ball and carpet
@@ -57,7 +59,7 @@ struct Circle {
         return false;
     }
     // Green class but not the carpet's green: part of the ball.
-    bool ballGreenAt(cv::Point p) const { return classAt(p) == ColorClass::Green && !carpetAt(p); }
+    bool ballGreenAt(cv::Point p) const { return roles.field(classAt(p)) && !carpetAt(p); }
     // The pixel `r` px out from the centre in the unit direction (ca, sa).
     cv::Point along(double r, double ca, double sa) const
     {
@@ -81,10 +83,9 @@ void scoreSquare(const Circle& c, int squareSide, ValidationScores& s)
         for (int xx = std::max(0, c.x - half); xx <= std::min(c.classes.cols - 1, c.x + half); ++xx) {
             if (!u[xx]) continue;
             ++used;
-            if (cls[xx] == std::uint8_t(ColorClass::Green))
-                green += !byColour || c.carpetAt({xx, yy});
-            black += cls[xx] == std::uint8_t(ColorClass::Black);
-            hint += c.options.ballHint != ColorClass::Unknown && cls[xx] == std::uint8_t(c.options.ballHint);
+            if (c.roles.field(cls[xx])) green += !byColour || c.carpetAt({xx, yy});
+            black += c.roles.black(cls[xx]);
+            hint += c.hint != ColorClass::Unknown && cls[xx] == std::uint8_t(c.hint);
         }
     }
     if (used > 0) {
@@ -143,12 +144,12 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
         // ball is partly hidden behind one: such a ray says nothing of the shape.
         const cv::Point b = c.along(r + options.beyondEdgePx, ca, sa);
         const bool beyondKnown = c.known(b);
-        const ColorClass beyond = beyondKnown ? c.classAt(b) : ColorClass::Unknown;
-        if (options.ignoreOccludedRays && beyond == ColorClass::Black) {
+        const std::uint8_t beyond = beyondKnown ? c.classAt(b) : std::uint8_t(ColorClass::Unknown);
+        if (options.ignoreOccludedRays && c.roles.black(beyond)) {
             ray.occluded = true;
             return ray;
         }
-        const bool intoCarpet = !beyondKnown || c.carpetAt(b) || (beyond == ColorClass::Green && c.carpetFollows(r, ca, sa));
+        const bool intoCarpet = !beyondKnown || c.carpetAt(b) || (c.roles.field(beyond) && c.carpetFollows(r, ca, sa));
         if (options.circleFit) {
             ray.hit = !options.borderIntoCarpet || intoCarpet;  // else an edge inside the ball
         } else if (r < rMin - 1e-9) {
@@ -164,7 +165,7 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
     if (!ray.hit && !blocked && options.ignoreOccludedRays) {
         // No border at all: the ball may run on into a robot standing against it.
         const cv::Point e = c.along(rMax, ca, sa);
-        ray.occluded = c.known(e) && c.classAt(e) == ColorClass::Black;
+        ray.occluded = c.known(e) && c.roles.black(c.classAt(e));
     }
     // A ray that found no border after passing unknown pixels may have lost it behind the mask.
     ray.judged = anyUsed && (ray.hit || blocked || !(sawUnknown && options.maskedRaysUnknown));
@@ -283,9 +284,9 @@ std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double re
     for (double r = 0.0; r <= reach + 1e-9; r += 0.5) {
         const cv::Point p = c.along(r, ca, sa);
         if (!c.known(p)) return std::nullopt;
-        const ColorClass cls = c.classAt(p);
-        if (cls == ColorClass::Black) return std::nullopt;
-        if (cls == ColorClass::Green) return false;
+        const std::uint8_t cls = c.classAt(p);
+        if (c.roles.black(cls)) return std::nullopt;
+        if (c.roles.field(cls)) return false;
         if (first < 0)
             first = int(cls);
         else if (int(cls) != first)
@@ -316,11 +317,11 @@ void scoreRunOn(const Circle& c, ValidationScores& s)
 }
 
 // The first test a scored candidate fails, in the thesis' order and then ours.
-RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& options)
+RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& options, bool hintKnown)
 {
     if (c.expectedRadiusPx < options.minRadiusPx) return RejectReason::TooSmall;
     // The known ball colour shows the candidate is neither carpet nor robot.
-    const bool hinted = options.ballHint != ColorClass::Unknown && c.scores.hintPct >= options.ballHintMinPct;
+    const bool hinted = hintKnown && c.scores.hintPct >= options.ballHintMinPct;
     if (!hinted && c.scores.nonGreenPct < options.minNonGreenPct) return RejectReason::NonGreen;
     if (!hinted && c.scores.nonBlackPct < options.minNonBlackPct) return RejectReason::NonBlack;
     if (c.scores.circularityPct < options.minCircularityPct) return RejectReason::Circularity;
@@ -338,13 +339,14 @@ RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& op
 
 ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,
                              const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options,
-                             const FrameColour* colour)
+                             const FrameColour* colour, const ColourRoles& roles)
 {
-    Circle circle{x, y, radius, classes, edges, geometry, options, colour, {}};
+    Circle circle{x, y, radius, classes, edges, geometry, options, colour, roles, roles.idOf(options.ballHint), {}};
     if (colour && options.carpetByColour) {
         CV_Assert(colour->frame().size() == classes.size());
         // Past the ball's blurred border and its contact shadow, before the next object.
-        circle.carpet = CarpetColour::around(*colour, classes, geometry, x, y, 1.5 * radius + 1.0, 2.5 * radius + 2.0);
+        circle.carpet =
+            CarpetColour::around(*colour, classes, geometry, roles, x, y, 1.5 * radius + 1.0, 2.5 * radius + 2.0);
     }
     ValidationScores s;
     scoreSquare(circle, squareSide, s);
@@ -354,13 +356,14 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
 }
 
 void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry,
-                       const BallModel& ball, const ValidationOptions& options, const FrameColour* colour)
+                       const BallModel& ball, const ValidationOptions& options, const FrameColour* colour,
+                       const ColourRoles& roles)
 {
     CV_Assert(classes.type() == CV_8UC1 && edges.type() == CV_8UC1 && classes.size() == edges.size());
     c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, ball.squareSizeAt(c.distancePx), classes, edges,
-                           geometry, options, colour);
+                           geometry, options, colour, roles);
     if (c.rejected != RejectReason::None) return;  // already out (outside the area, too large)
-    c.rejected = firstFailedTest(c, options);
+    c.rejected = firstFailedTest(c, options, roles.idOf(options.ballHint) != ColorClass::Unknown);
 }
 
 }  // namespace omnitune

@@ -4,9 +4,11 @@
 #include "core/BallCandidate.h"
 #include "core/CarpetColour.h"
 #include "core/ColorClass.h"
+#include "core/ColourClasses.h"
 
 #include <opencv2/core.hpp>
 
+#include <string>
 #include <vector>
 
 namespace omnitune {
@@ -82,24 +84,25 @@ struct ValidationOptions {
     bool carpetByColour = true;
     CarpetTolerance carpetTolerance;
 
-    // The ball's colour class when the team knows it (Unknown: no hint). When at least
+    // The ball's colour class when the team knows it, by name ("none": no hint). When at least
     // ballHintMinPct of the square's processed pixels have that class, the colour tests (non-green,
     // non-black) are passed: the ball's own colour shows it is neither carpet nor robot. The shape
     // tests still apply. Never required.
-    ColorClass ballHint = ColorClass::Unknown;
+    std::string ballHint = "none";
     double ballHintMinPct = 15.0;  // %
 };
 
 // Scores one candidate and sets its `rejected` field (first failing test: too small, then the
 // thesis order non-green, non-black, circularity, then our run-on test). `classes` holds colour
-// class ids, `edges` the edge image, `colour` (optional) the frame's colours for carpetByColour.
+// class ids, `edges` the edge image, `colour` (optional) the frame's colours for carpetByColour,
+// `roles` what the ids are: "green" is every field class, "black" every black class.
 void validateCandidate(BallCandidate& candidate, const cv::Mat& classes, const cv::Mat& edges,
                        const Geometry& geometry, const BallModel& ball, const ValidationOptions& options,
-                       const FrameColour* colour = nullptr);
+                       const FrameColour* colour = nullptr, const ColourRoles& roles = defaultColourRoles());
 
 // The scores alone, for a circle at (x, y) of the given radius and square side.
 ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,
                              const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options,
-                             const FrameColour* colour = nullptr);
+                             const FrameColour* colour = nullptr, const ColourRoles& roles = defaultColourRoles());
 
 }  // namespace omnitune

@@ -253,7 +253,7 @@ private slots:
             QVERIFY2(r.out.contains(word), qPrintable(r.describe()));
         const omnitune::ConfigLoad load = omnitune::loadConfig(out.toStdString());
         QVERIFY(load.ok());
-        const auto& green = load.config.colors.ranges[std::size_t(omnitune::ColorClass::Green)];
+        const auto& green = load.config.colors.classes[std::size_t(omnitune::ColorClass::Green) - 1].boxes.front();
         QVERIFY2(green.containsHue(88) && green.hMin > 70, qPrintable(r.out));
         QVERIFY(load.config.colors.blackRelative);
         QCOMPARE(load.config.geometry.imageWidth, 640);  // the rest kept

@@ -89,7 +89,7 @@ private slots:
         QVERIFY2(res.ok(), res.error ? res.error->c_str() : "");
         QVERIFY2(std::abs(res.carpetHue - hue) <= 2, qPrintable(QString::number(res.carpetHue)));
         QVERIFY(res.carpetPct > 80);
-        const HsvRange& green = res.colors.ranges[std::size_t(ColorClass::Green)];
+        const HsvRange& green = res.colors.classes[std::size_t(ColorClass::Green) - 1].boxes.front();
         QVERIFY(green.containsHue(hue));
         QVERIFY(res.colors.blackRelative);
 
@@ -112,7 +112,7 @@ private slots:
         QVERIFY(share(segment(ColorLutOptions{}, s.frame, geometry), s.carpet, ColorClass::Green) < 0.5);
         const AutoColourResult res = autoColour({s.frame, s.frame}, geometry, ColorLutOptions{});
         QVERIFY(res.ok());
-        const HsvRange& cyan = res.colors.ranges[std::size_t(ColorClass::Cyan)];
+        const HsvRange& cyan = res.colors.classes[std::size_t(ColorClass::Cyan) - 1].boxes.front();
         QVERIFY(!cyan.enabled || !cyan.containsHue(88));
         QVERIFY(!res.notes.empty());
     }

@@ -19,7 +19,7 @@ ColorClass direct(const ColorLutOptions& o, cv::Vec3b bgr)
     cv::Mat hsv;
     cv::cvtColor(px, hsv, cv::COLOR_BGR2HSV);
     const cv::Vec3b h = hsv.at<cv::Vec3b>(0, 0);
-    return classifyHsv(o.ranges, h[0], h[1], h[2]);
+    return classifyHsv(o.classes, h[0], h[1], h[2]);
 }
 
 // BGR -> full-range BT.601 YUV, the inverse of yuvToBgr.
@@ -123,8 +123,8 @@ private slots:
     void wrappedClassThroughLut()
     {
         ColorLutOptions o;
-        o.ranges[std::size_t(ColorClass::Magenta)] = HsvRange{true, 170, 8, 150, 255, 80, 255};
-        o.ranges[std::size_t(ColorClass::Orange)].enabled = false;
+        o.classes[std::size_t(ColorClass::Magenta) - 1].boxes = {HsvRange{true, 170, 8, 150, 255, 80, 255}};
+        o.classes[std::size_t(ColorClass::Orange) - 1].enabled = false;
         const ColorLut lut(o);
         QCOMPARE(lut.classifyBgr(20, 20, 220), ColorClass::Magenta);   // hue 0
         QCOMPARE(lut.classifyBgr(60, 20, 220), ColorClass::Magenta);   // hue ~174
@@ -135,7 +135,7 @@ private slots:
     void disabledClassNeverMatches()
     {
         ColorLutOptions o;
-        o.ranges[std::size_t(ColorClass::Green)].enabled = false;
+        o.classes[std::size_t(ColorClass::Green) - 1].enabled = false;
         const ColorLut lut(o);
         QCOMPARE(lut.classifyBgr(40, 140, 40), ColorClass::Unknown);
     }

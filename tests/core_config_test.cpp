@@ -43,8 +43,8 @@ Config changedConfig()
     c.camera.exposure = 412;
     c.camera.gain = 17;
     c.colors.bits = 7;
-    c.colors.ranges[std::size_t(ColorClass::Orange)] = HsvRange{true, 172, 12, 100, 250, 70, 240};
-    c.colors.ranges[std::size_t(ColorClass::Cyan)].enabled = false;
+    c.colors.classes[std::size_t(ColorClass::Orange) - 1].boxes = {HsvRange{true, 172, 12, 100, 250, 70, 240}};
+    c.colors.classes[std::size_t(ColorClass::Cyan) - 1].enabled = false;
     c.geometry = GeometryOptions{505, 480, 251.5, 238.25, 44, 236, ""};
     c.sensors.count = 120;
     c.distanceMap.pixelRadii = {0, 60, 120, 236};
@@ -99,7 +99,8 @@ std::vector<ConfigValue> otherValues(const ConfigKey& k, const Config& c)
         return {d + 0.1, d - 0.1, k.min + (k.max - k.min) / 3.0};
     }
     case ValueType::Bool: return {!std::get<bool>(v)};
-    case ValueType::Text: return {std::string("Flea2 \"robot 3\": #1 \\ 50% [a, b] {c}")};
+    // The second: a text key that must name a colour class (validation.ball_hint_class).
+    case ValueType::Text: return {std::string("Flea2 \"robot 3\": #1 \\ 50% [a, b] {c}"), std::string("orange")};
     case ValueType::Choice: {
         std::vector<ConfigValue> out;
         for (const auto& choice : k.choices)

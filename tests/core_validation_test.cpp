@@ -410,12 +410,12 @@ private slots:
         cv::ellipse(frame, p, cv::Size(r - 2, r - 2), 0, 0, 180, kGreen, cv::FILLED);
         const BallCandidate none = validateFrame(c, frame, p);
         QVERIFY2(none.rejected == RejectReason::NonGreen, qPrintable(verdict(none)));
-        c.validation.ballHint = ColorClass::Orange;
+        c.validation.ballHint = "orange";
         const BallCandidate orange = validateFrame(c, frame, p);
         QVERIFY2(orange.rejected == RejectReason::None, qPrintable(verdict(orange)));
         QVERIFY(orange.scores.hintPct >= c.validation.ballHintMinPct);
         // A hint of another colour changes nothing.
-        c.validation.ballHint = ColorClass::Cyan;
+        c.validation.ballHint = "cyan";
         QCOMPARE(validateFrame(c, frame, p).rejected, RejectReason::NonGreen);
     }
 

@@ -79,6 +79,8 @@ void ConfigDocument::updateDirty()
     bool dirty = false;
     for (const ConfigKey& k : configSchema())
         if (!(k.get(config_) == k.get(saved_))) dirty = true;
+    // The colour classes are a list, not a schema key (the class editor replaces them).
+    if (config_.colors.classes != saved_.colors.classes) dirty = true;
     // A new mask under the same file name is an edit too (Camera set up proposes one).
     // The same buffer (a copy of the saved config) needs no pixel comparison: the common case
     // on every threshold edit.

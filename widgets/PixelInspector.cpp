@@ -1,6 +1,6 @@
 #include "widgets/PixelInspector.h"
 
-#include "core/ColorClass.h"
+#include "core/ColourClasses.h"
 #include "core/DistanceMap.h"
 
 #include <opencv2/imgproc.hpp>
@@ -22,6 +22,7 @@ QString describePixel(const PipelineRun& run, const Config& config, QPointF imag
     cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar(c[0], c[1], c[2])), hsv, cv::COLOR_BGR2HSV);
     const cv::Vec3b h = hsv.at<cv::Vec3b>(0, 0);
     const auto cls = static_cast<ColorClass>(run.result.classes.at<std::uint8_t>(y, x));
+    const std::string className = colourClassName(run.config.colors.classes, cls);
     const auto& g = config.geometry;
     const double d = std::hypot(x - g.centerX, y - g.centerY);
     const bool inRing = d >= g.innerRadius && d <= g.outerRadius;
@@ -41,7 +42,7 @@ QString describePixel(const PipelineRun& run, const Config& config, QPointF imag
         .arg(h[0])
         .arg(h[1])
         .arg(h[2])
-        .arg(QString::fromLatin1(colorClassKey(cls).data(), int(colorClassKey(cls).size())))
+        .arg(QString::fromStdString(className))
         .arg(d, 0, 'f', 1)
         .arg(metres)
         .arg(!inRing ? QStringLiteral("not processed (outside the ring)")

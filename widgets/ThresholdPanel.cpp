@@ -159,6 +159,8 @@ QString tooltipFor(const ConfigKey& k)
     const QString rangeWord = k.type == ValueType::Choice ? ThresholdPanel::tr("Choices") : ThresholdPanel::tr("Range");
     if (!range.isEmpty())
         html += ThresholdPanel::tr("<p>%1: %2<br/>Default: %3</p>").arg(rangeWord, range.toHtmlEscaped(), (defText + unit).toHtmlEscaped());
+    else
+        html += ThresholdPanel::tr("<p>Default: %1</p>").arg((defText + unit).toHtmlEscaped());
     return html;
 }
 

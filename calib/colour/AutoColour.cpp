@@ -45,6 +45,17 @@ AutoColourResult autoColour(const std::vector<cv::Mat>& frames, const Geometry& 
 {
     AutoColourResult res;
     res.colors = start;
+    // What is set follows the classes' roles: the first field class is the carpet, the first
+    // black and line classes black and white.
+    auto firstWith = [&res](ColourRole role) -> ColourClassDef* {
+        for (ColourClassDef& c : res.colors.classes)
+            if (c.role == role) return &c;
+        return nullptr;
+    };
+    if (!firstWith(ColourRole::Field)) {
+        res.error = "no class has role field: there is no carpet class to calibrate";
+        return res;
+    }
     if (frames.empty()) {
         res.error = "no frames to calibrate colour from";
         return res;
@@ -135,29 +146,47 @@ AutoColourResult autoColour(const std::vector<cv::Mat>& frames, const Geometry& 
     const int sLow = percentile(sats, o.tailPct);
     res.carpetS = percentile(sats, 50.0);
     const int blackV = std::clamp(int(std::lround(o.blackVRatio * res.carpetV)), 1, 254);
-    HsvRange& green = res.colors.ranges[std::size_t(ColorClass::Green)];
+    ColourClassDef& field = *firstWith(ColourRole::Field);
     // S floor: not below minSaturationShare of the median either: pixels where the ball's border
     // blurs into the carpet are greenish with low S, and calling them carpet eats the ball's rim
     // (simulated dim tours: S floor 31 -> 60-85 % of balls, 60..110 -> 100 %).
     const int sMin = std::max({10, int(0.8 * sLow), int(std::lround(o.minSaturationShare * res.carpetS))});
-    green = HsvRange{true, wrapHue(peak + hLo), wrapHue(peak + hHi), std::min(sMin, 250), 255, blackV + 1, 255};
+    field.enabled = true;
+    field.boxes = {HsvRange{true, wrapHue(peak + hLo), wrapHue(peak + hHi), std::min(sMin, 250), 255, blackV + 1, 255}};
+    const HsvRange green = field.boxes.front();
 
     // Black: dark relative to the carpet, any hue.
     res.colors.blackRelative = true;
     res.colors.blackVRatio = o.blackVRatio;
-    res.colors.ranges[std::size_t(ColorClass::Black)] = HsvRange{true, 0, 179, 0, 255, 0, blackV};
+    if (ColourClassDef* black = firstWith(ColourRole::Black)) {
+        black->enabled = true;
+        black->boxes = {HsvRange{true, 0, 179, 0, 255, 0, blackV}};
+    } else {
+        res.notes.push_back("no class has role black: robots stay unclassified");
+    }
 
     // White: low saturation (below green's), clearly brighter than the carpet.
     const int whiteSMax = std::clamp(green.sMin - 1, 10, 60);
     const int whiteVMin = std::clamp(int(std::lround(std::min(1.3 * res.carpetV, (res.carpetV + 255) / 2.0))),
                                      blackV + 1, 250);
-    res.colors.ranges[std::size_t(ColorClass::White)] = HsvRange{true, 0, 179, 0, whiteSMax, whiteVMin, 255};
+    if (ColourClassDef* white = firstWith(ColourRole::Line)) {
+        white->enabled = true;
+        white->boxes = {HsvRange{true, 0, 179, 0, whiteSMax, whiteVMin, 255}};
+    } else {
+        res.notes.push_back("no class has role line: lines stay unclassified");
+    }
 
-    // Classes tested after green never see the carpet's hues anyway; trim them so that the
-    // ranges say what they do (a cyan-green carpet overlaps the cyan marker class).
+    // Colour classes after the carpet in priority order never see the carpet's hues anyway; trim
+    // them so that their boxes say what they do (a cyan-green carpet overlaps the cyan marker class).
     if (green.hMin <= green.hMax) {
-        for (ColorClass c : {ColorClass::Orange, ColorClass::Cyan, ColorClass::Magenta})
-            trimOff(res.colors.ranges[std::size_t(c)], green.hMin, green.hMax, std::string(colorClassKey(c)), res.notes);
+        bool after = false;
+        for (ColourClassDef& c : res.colors.classes) {
+            after = after || &c == &field;
+            if (!after || !c.enabled || c.role == ColourRole::Field || c.role == ColourRole::Black ||
+                c.role == ColourRole::Line)
+                continue;
+            for (HsvRange& box : c.boxes) trimOff(box, green.hMin, green.hMax, c.name, res.notes);
+        }
     }
     return res;
 }

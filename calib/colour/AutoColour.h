@@ -1,7 +1,8 @@
 #pragma once
 // Automatic first colour calibration (issue 10): from one or a few frames, the dominant hue
-// inside the used area is the carpet; green's H/S box is set from the carpet's spread
-// (percentiles), black and white relative to the carpet's brightness. A first guess the user
+// inside the used area is the carpet; the first field class gets one H/S box from the carpet's
+// spread (percentiles), the first black and line classes black and white relative to the
+// carpet's brightness. A first guess the user
 // refines, not a replacement for looking at the segmented pane.
 #include "core/ColorLut.h"
 #include "core/Geometry.h"
@@ -29,7 +30,7 @@ struct AutoColourOptions {
 };
 
 struct AutoColourResult {
-    ColorLutOptions colors;     // the start options with green, white, black (and overlapping classes) set
+    ColorLutOptions colors;     // the start options with the field, line and black classes (and overlapping ones) set
     int carpetHue = 0;          // hue of the peak, 0..179
     int carpetV = 0;            // median V of the carpet's pixels
     int carpetS = 0;            // median S

@@ -84,7 +84,7 @@ AutoMaskResult autoMask(const std::vector<cv::Mat>& frames, const GeometryOption
             cv::Vec3b m;
             for (int c = 0; c < 3; ++c) m[c] = median(channel[std::size_t(c)]);
             // A still carpet is field, not robot: it is judged by nothing below.
-            if (lut.classifyBgr(m[0], m[1], m[2]) == ColorClass::Green) continue;
+            if (lut.isField(lut.classifyBgr(m[0], m[1], m[2]))) continue;
             ++judged;
             int changes = 0;
             for (int i = 0; i < n; ++i) {
