@@ -18,6 +18,7 @@ namespace omnitune {
 
 class CameraSetup;
 class CandidateTableModel;
+class ColourEditor;
 class ConfigFiles;
 class FrameNavigator;
 class GeometryEditor;
@@ -53,6 +54,7 @@ public:
     RecoveryFile* recovery() const { return recovery_; }
     CameraSetup* cameraSetup() const { return cameraSetup_; }
     GeometryEditor* geometryEditor() const { return geometryEditor_; }
+    ColourEditor* colourEditor() const { return colours_; }
     CandidateTableModel* candidates() const { return candidates_; }
     std::shared_ptr<const PipelineRun> lastRun() const { return lastRun_; }
     bool isProcessing() const;
@@ -101,6 +103,7 @@ private:
     CameraSetup* cameraSetup_ = nullptr;  // a camera the config does not fit yet
     QAction* setUpCameraAction_ = nullptr;
     GeometryEditor* geometryEditor_ = nullptr;  // drag centre and radii, nudge the centre
+    ColourEditor* colours_ = nullptr;  // colour classes, sampling on the panes (Colours dock)
     QLabel* resultLabel_;
     QLabel* truthLabel_;
     QLabel* timingLabel_;

@@ -47,6 +47,10 @@ public:
     // instead of marking or panning; turning it on turns marking off and the other way round.
     void setEditingGeometry(bool on);
     double paneScale() const { return panes_[0]->scale(); }  // widget px per image px
+    // Colour sampling (ColourSampler): the left button on any pane samples colours, reported
+    // with its modifiers, before marking, geometry editing or panning see it.
+    void setSampling(bool on);
+    bool isSampling() const { return sampling_; }
 
 signals:
     void hovered(QPointF imagePos);
@@ -57,6 +61,9 @@ signals:
     void geometryPressed(QPointF imagePos);
     void geometryDragged(QPointF imagePos);
     void geometryReleased(QPointF imagePos);
+    void samplePressed(QPointF imagePos, Qt::KeyboardModifiers modifiers);
+    void sampleDragged(QPointF imagePos);
+    void sampleReleased(QPointF imagePos);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -75,6 +82,7 @@ private:
     QWidget* side_ = nullptr;
     int enlarged_ = -1;
     bool editingGeometry_ = false;
+    bool sampling_ = false;
 };
 
 }  // namespace omnitune
