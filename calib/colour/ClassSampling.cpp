@@ -4,16 +4,6 @@
 
 namespace omnitune {
 
-namespace {
-
-bool sameBox(const HsvRange& a, const HsvRange& b)
-{
-    return a.enabled == b.enabled && a.hMin == b.hMin && a.hMax == b.hMax && a.sMin == b.sMin && a.sMax == b.sMax &&
-           a.vMin == b.vMin && a.vMax == b.vMax;
-}
-
-}  // namespace
-
 SampleEdit addSamples(std::vector<HsvRange>& boxes, int box, const std::vector<Hsv>& samples, const BoxFitOptions& o)
 {
     SampleEdit res;
@@ -27,7 +17,7 @@ SampleEdit addSamples(std::vector<HsvRange>& boxes, int box, const std::vector<H
     }
     const HsvRange grown = growBox(boxes[std::size_t(box)], samples, o);
     res.box = box;
-    res.changed = !sameBox(grown, boxes[std::size_t(box)]);
+    res.changed = grown != boxes[std::size_t(box)];
     boxes[std::size_t(box)] = grown;
     return res;
 }
