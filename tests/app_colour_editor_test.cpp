@@ -23,6 +23,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QListWidget>
+#include <QScrollArea>
 #include <QSlider>
 #include <QSpinBox>
 #include <QStatusBar>
@@ -352,7 +353,9 @@ private slots:
         window_->pipelineView()->transform()->setZoom(3.0, ball_);
         QVERIFY(waitForColours());
         QVERIFY(window_->grab().save(dir + "/colours.png"));
-        QVERIFY(editor()->grab().save(dir + "/colours-tab.png"));
+        auto* scroll = editor()->findChild<QScrollArea*>("colourScroll");
+        QVERIFY(scroll);
+        QVERIFY(scroll->widget()->grab().save(dir + "/colours-tab.png"));  // the whole tab, scrolled or not
     }
 
     void classViewsAndShares()

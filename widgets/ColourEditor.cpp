@@ -65,6 +65,9 @@ ClassBoxes boxesOf(const ColourClasses& classes)
     return out;
 }
 
+// Shares of a few pixels (a ball) still show as a number.
+QString pctText(double pct) { return QString::number(pct, 'f', pct > 0 && pct < 1 ? 2 : 1) + QStringLiteral(" %"); }
+
 QPushButton* smallButton(const QString& text, const QString& tip, const QString& name, QWidget* parent)
 {
     auto* b = new QPushButton(text, parent);
@@ -86,7 +89,9 @@ ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* par
     auto* outer = new QVBoxLayout(this);
     outer->setContentsMargins(0, 0, 0, 0);
     auto* scroll = new QScrollArea(this);
+    scroll->setObjectName("colourScroll");
     scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);  // the rows shrink to the dock's width
     scroll->setFrameShape(QFrame::NoFrame);
     outer->addWidget(scroll);
     auto* inner = new QWidget(scroll);
@@ -124,7 +129,7 @@ ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* par
         box->setToolTip(tip);
         tolRow->addWidget(box);
     }
-    sl->addRow(tr("Wand tolerance H S V"), tolRow);
+    sl->addRow(tr("Wand ± H S V"), tolRow);
     outliers_->setRange(0.0, 25.0);
     outliers_->setDecimals(1);
     outliers_->setSingleStep(0.5);
@@ -142,7 +147,6 @@ ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* par
     classList_->setObjectName("classList");
     classList_->setToolTip(tr("A pixel gets the first class whose boxes hold its colour; the tick switches a class "
                               "on or off; the percentage is its share of the processed pixels of the frame on screen"));
-    classList_->setMinimumHeight(150);
     cl->addWidget(classList_);
     auto* classButtons = new QHBoxLayout;
     QPushButton* add = smallButton(tr("Add"), tr("A new class at the end of the list; sample into it"), "addClass", classesBox);
@@ -202,7 +206,7 @@ ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* par
     overlaps_->setToolTip(tr("Red and white stripes where the boxes of two or more classes hold the pixel's colour: "
                              "the class higher in the list gets it"));
     sharesLabel_->setObjectName("shares");
-    sharesLabel_->setWordWrap(true);
+    sharesLabel_->setWordWrap(false);  // two short lines: a wrapped label in a scroll area may be cut
     vl->addWidget(onlyThis_);
     vl->addWidget(overlaps_);
     vl->addWidget(sharesLabel_);
@@ -345,6 +349,10 @@ void ColourEditor::refresh()
             item->setCheckState(def.enabled ? Qt::Checked : Qt::Unchecked);
         }
         classList_->setCurrentRow(c);
+        // Every class in view without scrolling (at most 15): the tab scrolls instead.
+        if (classList_->count() > 0)
+            classList_->setMinimumHeight(classList_->count() * std::max(classList_->sizeHintForRow(0), fontMetrics().height() + 5) +
+                                         2 * classList_->frameWidth());
     }
     refreshShares();
     {
@@ -379,15 +387,15 @@ void ColourEditor::refreshShares()
         const ColourClassDef& def = cs[std::size_t(i)];
         QString text = QStringLiteral("%1  ·  %2").arg(QString::fromStdString(def.name),
                                                       QString::fromUtf8(colourRoleName(def.role).data()));
-        if (have) text += QStringLiteral("  ·  %1 %").arg(shares_.pct(shares_.counts[std::size_t(i)]), 0, 'f', 1);
+        if (have) text += QStringLiteral("  ·  ") + pctText(shares_.pct(shares_.counts[std::size_t(i)]));
         const QSignalBlocker block(classList_);
         classList_->item(i)->setText(text);
     }
-    sharesLabel_->setText(have ? tr("Frame %1: in no class %2 % of the processed pixels; claimed by two or more classes "
-                                    "%3 % (%4 px)")
+    sharesLabel_->setText(have ? tr("Frame %1: %2 of the processed pixels in no class,\n%3 claimed by two or more "
+                                    "classes (%4 px)")
                                      .arg(run_ ? run_->frameIndex : -1)
-                                     .arg(shares_.pct(shares_.unclassified), 0, 'f', 1)
-                                     .arg(shares_.pct(shares_.overlapCount), 0, 'f', 1)
+                                     .arg(pctText(shares_.pct(shares_.unclassified)))
+                                     .arg(pctText(shares_.pct(shares_.overlapCount)))
                                      .arg(shares_.overlapCount)
                                : tr("Shares appear with a processed frame"));
 }

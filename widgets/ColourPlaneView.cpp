@@ -129,6 +129,10 @@ void ColourPlaneView::paintEvent(QPaintEvent*)
             }
         }
     }
+    // Axes, in words: the plane has no room for tick labels.
+    p.setPen(QColor(220, 220, 220));
+    p.drawText(pr.adjusted(3, 1, -3, -1), Qt::AlignBottom | Qt::AlignRight, tr("H 0..179 →"));
+    p.drawText(pr.adjusted(3, 1, -3, -1), Qt::AlignTop | Qt::AlignRight, tr("S ↑ 255"));
     // The V histogram, log scaled, and the selected box's V range.
     p.fillRect(vr, QColor(30, 30, 30));
     const int top = *std::max_element(v_.begin(), v_.end());
