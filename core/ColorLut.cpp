@@ -148,24 +148,24 @@ void ColorLut::segment(const cv::Mat& frame, PixelFormat format, const std::vect
     if (stats) *stats = SegmentStats{};
     if (!relative_) return;
 
-    // The V band of the pixel at (x, y): computed from BGR, read from a second table for UYVY.
-    const bool bgr = format == PixelFormat::Bgr8;
-    auto bandAt = [&](int x, int y) {
-        if (bgr) {
-            const std::uint8_t* p = frame.ptr<std::uint8_t>(y) + 3 * x;
-            return int(bgrBand(p[0], p[1], p[2]));
-        }
-        const std::uint8_t* pair = frame.ptr<std::uint8_t>(y) + 2 * (x & ~1);
-        return int(yuvBand_[index((x & 1) ? pair[3] : pair[1], pair[0], pair[2])]);
-    };
     // The carpet's V: median V band of the field pixels on every 4th row, every 2nd column
-    // (~1/8 of the ring: enough for a median, cheap next to the table reads).
+    // (~1/8 of the ring: enough for a median, cheap next to the table reads). A pixel's V band
+    // comes from its largest channel (BGR) or from a second table (UYVY).
+    const bool bgr = format == PixelFormat::Bgr8;
+    auto uyvyBand = [this](const std::uint8_t* row, int x) {
+        const std::uint8_t* pair = row + 2 * (x & ~1);
+        return yuvBand_[index((x & 1) ? pair[3] : pair[1], pair[0], pair[2])];
+    };
     std::array<int, 32> bands{};
     for (const RowSpan& s : spans) {
         if (s.y & 3) continue;
-        const std::uint8_t* row = classes.ptr<std::uint8_t>(s.y);
-        for (int x = s.x0; x < s.x1; x += 2)
-            if ((fieldMask_ >> row[x]) & 1u) ++bands[std::size_t(bandAt(x, s.y))];
+        const std::uint8_t* cls = classes.ptr<std::uint8_t>(s.y);
+        const std::uint8_t* row = frame.ptr<std::uint8_t>(s.y);
+        for (int x = s.x0; x < s.x1; x += 2) {
+            if (!((fieldMask_ >> cls[x]) & 1u)) continue;
+            const std::uint8_t* p = row + 3 * x;
+            ++bands[bgr ? vBand_[std::max(p[0], std::max(p[1], p[2]))] : uyvyBand(row, x)];
+        }
     }
     int total = 0;
     for (int n : bands) total += n;
@@ -180,13 +180,24 @@ void ColorLut::segment(const cv::Mat& frame, PixelFormat format, const std::vect
         carpetV = (band << 3) + 4;
         blackV = int(std::lround(blackVRatio_ * carpetV));
     }
-    if (blackV >= 0) {
-        std::array<bool, 32> black{};
-        for (int b = 0; b < 32; ++b) black[std::size_t(b)] = isBlackBand(b, blackV);
+    if (blackV >= 0 && bgr) {
+        // Black by the largest channel directly: one 256-entry look-up per pixel.
+        std::array<std::uint8_t, 256> dark{};
+        for (int v = 0; v < 256; ++v) dark[std::size_t(v)] = isBlackBand(vBand_[std::size_t(v)], blackV);
         for (const RowSpan& s : spans) {
+            const std::uint8_t* in = frame.ptr<std::uint8_t>(s.y) + 3 * s.x0;
+            std::uint8_t* out = classes.ptr<std::uint8_t>(s.y);
+            for (int x = s.x0; x < s.x1; ++x, in += 3)
+                if (dark[std::max(in[0], std::max(in[1], in[2]))]) out[x] = blackId_;
+        }
+    } else if (blackV >= 0) {
+        std::array<bool, 32> dark{};
+        for (int b = 0; b < 32; ++b) dark[std::size_t(b)] = isBlackBand(b, blackV);
+        for (const RowSpan& s : spans) {
+            const std::uint8_t* row = frame.ptr<std::uint8_t>(s.y);
             std::uint8_t* out = classes.ptr<std::uint8_t>(s.y);
             for (int x = s.x0; x < s.x1; ++x)
-                if (black[std::size_t(bandAt(x, s.y))]) out[x] = blackId_;
+                if (dark[uyvyBand(row, x)]) out[x] = blackId_;
         }
     }
     if (stats) *stats = SegmentStats{carpetV, blackV};

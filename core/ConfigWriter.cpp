@@ -2,11 +2,11 @@
 
 #include "core/ColourClassesYaml.h"
 #include "core/ConfigSchema.h"
+#include "core/YamlText.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include <charconv>
 #include <cstdio>
 #include <filesystem>
 
@@ -27,45 +27,14 @@ std::string comment(const ConfigKey& k)
     return c;
 }
 
-// The shortest text that reads back as exactly `v`, always with a '.' or an exponent so that
-// YAML reads a real ("30.0", not "30").
-std::string shortestNumber(double v)
-{
-    char buf[64];
-    const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
-    std::string s(buf, end);
-    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-    return s;
-}
-
-// A string always in double quotes, escaped as OpenCV's YAML reader unescapes it. Not OpenCV's
-// own writer: it leaves a text that starts and ends with a quote unescaped ("Flea2" in quotes
-// came back without them; a lone " wrote a file that does not load). The parser refuses the
-// other control characters, and checkConfig() text longer than the reader takes.
-std::string quoted(const std::string& s)
-{
-    std::string out = "\"";
-    for (const char c : s) {
-        switch (c) {
-        case '\\': out += "\\\\"; break;
-        case '"': out += "\\\""; break;
-        case '\n': out += "\\n"; break;
-        case '\r': out += "\\r"; break;
-        case '\t': out += "\\t"; break;
-        default: out += c;
-        }
-    }
-    return out + "\"";
-}
-
 std::string valueText(const ConfigValue& v)
 {
     if (const int* i = std::get_if<int>(&v)) return std::to_string(*i);
-    if (const double* d = std::get_if<double>(&v)) return shortestNumber(*d);
+    if (const double* d = std::get_if<double>(&v)) return yamlNumber(*d);
     if (const bool* b = std::get_if<bool>(&v)) return *b ? "1" : "0";
-    if (const std::string* s = std::get_if<std::string>(&v)) return quoted(*s);
+    if (const std::string* s = std::get_if<std::string>(&v)) return yamlQuoted(*s);
     std::string list = "[";
-    for (double d : std::get<std::vector<double>>(v)) list += (list.size() > 1 ? ", " : " ") + shortestNumber(d);
+    for (double d : std::get<std::vector<double>>(v)) list += (list.size() > 1 ? ", " : " ") + yamlNumber(d);
     return list + " ]";
 }
 

@@ -1,6 +1,7 @@
 #include "core/YamlText.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cctype>
 #include <cerrno>
 #include <climits>
@@ -281,6 +282,31 @@ std::string yamlTypeOf(const cv::FileNode& n)
     if (n.isSeq()) return "a list";
     if (n.isMap()) return "a section";
     return "nothing";
+}
+
+std::string yamlNumber(double v)
+{
+    char buf[64];
+    const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+    std::string s(buf, end);
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+    return s;
+}
+
+std::string yamlQuoted(const std::string& s)
+{
+    std::string out = "\"";
+    for (const char c : s) {
+        switch (c) {
+        case '\\': out += "\\\\"; break;
+        case '"': out += "\\\""; break;
+        case '\n': out += "\\n"; break;
+        case '\r': out += "\\r"; break;
+        case '\t': out += "\\t"; break;
+        default: out += c;
+        }
+    }
+    return out + "\"";
 }
 
 }  // namespace omnitune

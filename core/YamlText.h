@@ -48,6 +48,16 @@ std::optional<FileIssue> checkWrittenValues(const std::string& text, const cv::F
 // when absent. cv::FileNode does not know its line; messages want it.
 int yamlLineOfKey(const std::string& text, const std::string& path);
 
+// The shortest text that reads back as exactly `v`, always with a '.' or an exponent so that
+// YAML reads a real ("30.0", not "30"; "0.3", not 2.9999999999999999e-01).
+std::string yamlNumber(double v);
+
+// `s` in double quotes, escaped as OpenCV's YAML reader unescapes it. Not OpenCV's own writer:
+// it leaves a text that starts and ends with a quote unescaped ("Flea2" in quotes came back
+// without them; a lone " wrote a file that does not load). Parsers refuse the other control
+// characters (findUnsavableCharacter).
+std::string yamlQuoted(const std::string& s);
+
 // "an integer", "a number", "text \"abc\"", "a list", "a section", "nothing": for messages.
 std::string yamlTypeOf(const cv::FileNode& n);
 

@@ -140,6 +140,27 @@ private slots:
         QVERIFY(!QFile::exists(RecoveryFile::fileFor(config_)));
     }
 
+    // Class edits (the colour class editor's replaceConfig steps) are no schema keys: they must be
+    // recovered too, as one step.
+    void colourClassEditsAreRestored()
+    {
+        Config edited = loadConfig(config_.toStdString()).config;
+        edited.colors.classes[std::size_t(ColorClass::Yellow) - 1].enabled = true;
+        edited.colors.classes[std::size_t(ColorClass::Green) - 1].boxes.push_back(HsvRange{true, 86, 98, 50, 255, 30, 255});
+        leaveRecoveryFile(edited);
+
+        MainWindow window;
+        BoxAnswerer restore(QMessageBox::Yes);
+        QVERIFY(window.openSource(session_));
+        QCOMPARE(restore.details.size(), 1);
+        QVERIFY2(restore.details.front().contains("colors.classes"), qPrintable(restore.details.front()));
+        QVERIFY(window.document()->config().colors.classes == edited.colors.classes);
+        QVERIFY(window.document()->isDirty());
+        QCOMPARE(window.document()->undoStack()->count(), 1);
+        QVERIFY(window.saveConfig());
+        QVERIFY(loadConfig(config_.toStdString()).config.colors.classes == edited.colors.classes);
+    }
+
     void editsAreWrittenAndRemovedOnSave()
     {
         MainWindow window;

@@ -18,6 +18,24 @@ private slots:
         QVERIFY(diffConfigs(a, b).empty());
     }
 
+    // The class list is no schema key; an edit of it (the class editor) is one change carrying the
+    // recovered classes, so crash recovery can restore it.
+    void colourClassesAreOneChange()
+    {
+        const Config saved;
+        Config recovered;
+        recovered.colors.classes[2].boxes.push_back(HsvRange{true, 86, 98, 50, 255, 30, 255});
+        auto changes = diffConfigs(saved, recovered);
+        QCOMPARE(int(changes.size()), 1);
+        QCOMPARE(changes[0].key, std::string("colors.classes"));
+        QVERIFY(changes[0].classes == recovered.colors.classes);
+        QVERIFY(QString::fromStdString(changes[0].toString()).contains("boxes or roles edited"));
+        recovered.colors.classes.pop_back();
+        changes = diffConfigs(saved, recovered);
+        QCOMPARE(int(changes.size()), 1);
+        QVERIFY(QString::fromStdString(changes[0].toString()).contains("6 classes"));
+    }
+
     void everyChangedKeyOnceInSchemaOrder()
     {
         const Config saved;

@@ -51,6 +51,19 @@ cv::Mat binCentres(int bits)
     return grid;
 }
 
+// A geometry that processes every pixel of a small image.
+Geometry wholeImage(int width, int height)
+{
+    GeometryOptions g;
+    g.imageWidth = width;
+    g.imageHeight = height;
+    g.centerX = width / 2.0;
+    g.centerY = height / 2.0;
+    g.innerRadius = 0;
+    g.outerRadius = width + height;
+    return Geometry(g, cv::Mat());
+}
+
 std::string configText(const std::string& classes)
 {
     return "%YAML:1.0\n---\nschema: 1\ncolors:\n   classes:\n" + classes;
@@ -121,14 +134,7 @@ private slots:
         QCOMPARE(colourClassName(o.classes, green), std::string("green"));
         QVERIFY(!roles.field(std::uint8_t(green)));
 
-        GeometryOptions g;
-        g.imageWidth = 4;
-        g.imageHeight = 1;
-        g.centerX = 2;
-        g.centerY = 0;
-        g.innerRadius = 0;
-        g.outerRadius = 10;
-        const Geometry geo(g, cv::Mat());
+        const Geometry geo = wholeImage(4, 1);
         cv::Mat classes = (cv::Mat_<std::uint8_t>(1, 4) << std::uint8_t(cg), std::uint8_t(green), 2, 0);
         cv::Mat binary;
         makeBinary(classes, geo, binary, 128, roles);
@@ -160,14 +166,7 @@ private slots:
         std::rotate(o.classes.begin(), o.classes.begin() + 1, o.classes.end());  // black last
         const ColorClass black = colourClassId(int(o.classes.size()) - 1);
         const ColorLut lut(o);
-        GeometryOptions g;
-        g.imageWidth = 40;
-        g.imageHeight = 40;
-        g.centerX = 20;
-        g.centerY = 20;
-        g.innerRadius = 0;
-        g.outerRadius = 100;
-        const Geometry geo(g, cv::Mat());
+        const Geometry geo = wholeImage(40, 40);
         cv::Mat frame(40, 40, CV_8UC3, cv::Scalar(30, 90, 30));             // dim carpet, V 90
         cv::rectangle(frame, cv::Rect(0, 0, 10, 10), cv::Scalar(20, 25, 30), cv::FILLED);  // robot, V 30
         cv::Mat classes(40, 40, CV_8UC1, cv::Scalar(0));

@@ -164,7 +164,16 @@ QStringList RecoveryFile::restore(const RecoveredEdits& edits)
         progress = false;
         refused.clear();
         for (auto it = left.begin(); it != left.end();) {
-            if (const auto why = doc_->setValue(QString::fromStdString(it->key), it->to)) {
+            // The colour classes are a list, not a schema key: one whole-config step.
+            std::optional<QString> why;
+            if (it->key == "colors.classes") {
+                Config next = doc_->config();
+                next.colors.classes = it->classes;
+                if (next.colors.classes != doc_->config().colors.classes) why = doc_->replaceConfig(next, tr("Colour classes"));
+            } else {
+                why = doc_->setValue(QString::fromStdString(it->key), it->to);
+            }
+            if (why) {
                 refused << QStringLiteral("%1 (%2)").arg(QString::fromStdString(it->toString()), *why);
                 ++it;
             } else {
