@@ -4,6 +4,8 @@
 #include "widgets/CameraSetupBar.h"
 #include "widgets/CandidateTableModel.h"
 #include "widgets/CandidateTableView.h"
+#include "widgets/ColourEditor.h"
+#include "widgets/ColourSampler.h"
 #include "widgets/ConfigFiles.h"
 #include "widgets/DistancePointsPanel.h"
 #include "widgets/FrameNavigator.h"
@@ -97,6 +99,15 @@ MainWindow::MainWindow(QWidget* parent)
     legendDock->setWidget(new OverlayLegend(legendDock));
     addDockWidget(Qt::RightDockWidgetArea, legendDock);
     tabifyDockWidget(panelDock, legendDock);
+    // The colour classes and sampling (issue 10): a tab beside the thresholds.
+    colours_ = new ColourEditor(&doc_, view_, this);
+    auto* coloursDock = new QDockWidget(tr("Colours"), this);
+    coloursDock->setObjectName("colours");
+    coloursDock->setWidget(colours_);
+    addDockWidget(Qt::RightDockWidgetArea, coloursDock);
+    tabifyDockWidget(panelDock, coloursDock);
+    connect(this, &MainWindow::runShown, colours_, [this] { colours_->setRun(lastRun_); });
+    connect(colours_, &ColourEditor::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     panelDock->raise();
 
     auto* table = new CandidateTableView(candidates_, this);
@@ -260,6 +271,18 @@ void MainWindow::buildMenus()
     });
     connect(marker_, &TruthMarker::markingChanged, this, [this](bool on) {
         if (on) geometryEditor_->setEditing(false);
+        if (on) colours_->sampler()->setSampling(false);
+    });
+    // Colour sampling takes the left button too: one of the three at a time.
+    colours_->fillMenu(menuBar()->addMenu(tr("C&olours")));
+    connect(colours_->sampler(), &ColourSampler::samplingChanged, this, [this](bool on) {
+        if (!on) return;
+        if (marker_->isMarking()) marker_->setMarking(false);
+        geometryEditor_->setEditing(false);
+        if (auto* dock = findChild<QDockWidget*>("colours")) dock->raise();  // sampling goes to the class selected there
+    });
+    connect(geometryEditor_, &GeometryEditor::editingChanged, colours_->sampler(), [this](bool on) {
+        if (on) colours_->sampler()->setSampling(false);
     });
     // The mask and the radial sensors; one editor holds the left button at a time.
     paneEditors_ = new PaneEditors(&doc_, view_, geometryEditor_, marker_, rayStrip_, this);
@@ -346,6 +369,7 @@ void MainWindow::clearForNewSource()
     source_.reset();  // a config loaded (or restored) before the new source is set runs nothing old
     lastRun_.reset();
     marker_->setRun(nullptr);
+    colours_->setRun(nullptr);  // strokes sample nothing of the previous source
     view_->clear(tr("Opening %1: reading its first frame...").arg(sourceName_));
     candidates_->clear();
     resultLabel_->setText(tr("Opening %1...").arg(sourceName_));

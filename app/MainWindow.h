@@ -18,6 +18,7 @@ namespace omnitune {
 
 class CameraSetup;
 class CandidateTableModel;
+class ColourEditor;
 class ConfigFiles;
 class FrameNavigator;
 class GeometryEditor;
@@ -56,6 +57,7 @@ public:
     CameraSetup* cameraSetup() const { return cameraSetup_; }
     GeometryEditor* geometryEditor() const { return geometryEditor_; }
     PaneEditors* paneEditors() const { return paneEditors_; }
+    ColourEditor* colourEditor() const { return colours_; }
     CandidateTableModel* candidates() const { return candidates_; }
     std::shared_ptr<const PipelineRun> lastRun() const { return lastRun_; }
     bool isProcessing() const;
@@ -106,6 +108,7 @@ private:
     GeometryEditor* geometryEditor_ = nullptr;  // drag centre and radii, nudge the centre
     PaneEditors* paneEditors_ = nullptr;  // the mask and the radial sensors on the panes
     RayStrip* rayStrip_ = nullptr;        // the classes along the selected sensor ray
+    ColourEditor* colours_ = nullptr;  // colour classes, sampling on the panes (Colours dock)
     QLabel* resultLabel_;
     QLabel* truthLabel_;
     QLabel* timingLabel_;

@@ -5,6 +5,7 @@
 #include <QEvent>
 #include <QGridLayout>
 #include <QLabel>
+#include <QMouseEvent>
 
 namespace omnitune {
 
@@ -186,11 +187,33 @@ void PipelineView::placeCaption(int index)
     c->raise();
 }
 
+void PipelineView::setSampling(bool on)
+{
+    sampling_ = on;
+    for (ImageView* v : panes_) v->setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
+}
+
 bool PipelineView::eventFilter(QObject* watched, QEvent* event)
 {
     if (event->type() == QEvent::Resize)
         for (int i = 0; i < kPaneCount; ++i)
             if (watched == panes_[std::size_t(i)]) placeCaption(i);
+    // Colour sampling takes the left button with its modifiers (add, remove, rectangle) before
+    // the pane pans or marks; the middle button still pans.
+    const auto type = event->type();
+    if (sampling_ && (type == QEvent::MouseButtonPress || type == QEvent::MouseButtonDblClick ||
+                      type == QEvent::MouseMove || type == QEvent::MouseButtonRelease)) {
+        auto* pane = qobject_cast<ImageView*>(watched);
+        auto* mouse = static_cast<QMouseEvent*>(event);
+        const bool left = mouse->button() == Qt::LeftButton || (type == QEvent::MouseMove && (mouse->buttons() & Qt::LeftButton));
+        if (pane && left && !pane->image().isNull()) {
+            const QPointF p = pane->toImage(mouse->localPos());
+            if (type == QEvent::MouseMove) emit sampleDragged(p);
+            else if (type == QEvent::MouseButtonRelease) emit sampleReleased(p);
+            else emit samplePressed(p, mouse->modifiers());
+            return true;
+        }
+    }
     return QWidget::eventFilter(watched, event);
 }
 

@@ -52,6 +52,10 @@ public:
     void setPaneEditor(const QObject* editor);
     const QObject* paneEditor() const { return paneEditor_; }
     double paneScale() const { return panes_[0]->scale(); }  // widget px per image px
+    // Colour sampling (ColourSampler): the left button on any pane samples colours, reported
+    // with its modifiers, before marking, geometry editing or panning see it.
+    void setSampling(bool on);
+    bool isSampling() const { return sampling_; }
 
 signals:
     void hovered(QPointF imagePos);
@@ -65,6 +69,9 @@ signals:
     void editorPressed(QPointF imagePos);
     void editorDragged(QPointF imagePos);
     void editorReleased(QPointF imagePos);
+    void samplePressed(QPointF imagePos, Qt::KeyboardModifiers modifiers);
+    void sampleDragged(QPointF imagePos);
+    void sampleReleased(QPointF imagePos);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -84,6 +91,7 @@ private:
     int enlarged_ = -1;
     bool editingGeometry_ = false;
     const QObject* paneEditor_ = nullptr;
+    bool sampling_ = false;
 };
 
 }  // namespace omnitune
