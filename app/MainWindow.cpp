@@ -289,6 +289,10 @@ void MainWindow::buildMenus()
     paneEditors_->fillMenu(camera);
     addToolBar(Qt::TopToolBarArea, paneEditors_->mask()->toolBar());
     connect(paneEditors_, &PaneEditors::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    connect(paneEditors_, &PaneEditors::leftButtonTaken, colours_->sampler(), [this] { colours_->sampler()->setSampling(false); });
+    connect(colours_->sampler(), &ColourSampler::samplingChanged, paneEditors_, [this](bool on) {
+        if (on) paneEditors_->releaseLeftButton();
+    });
     paneEditors_->distances()->hide();
     // A tab beside the thresholds from the first use on (docked earlier, its size would squeeze them).
     camera->addAction(tr("&Distance map points and fit..."), this, [this] {

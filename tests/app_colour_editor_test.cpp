@@ -12,6 +12,9 @@
 #include "widgets/ColourEditor.h"
 #include "widgets/ColourPlaneView.h"
 #include "widgets/ColourSampler.h"
+#include "widgets/MaskEditor.h"
+#include "widgets/PaneEditors.h"
+#include "widgets/RadialSensorEditor.h"
 #include "widgets/ConfigDocument.h"
 #include "widgets/PipelineView.h"
 #include "widgets/TruthDocument.h"
@@ -228,6 +231,21 @@ private slots:
         QCOMPARE(doc->undoStack()->count(), steps);
         QVERIFY2(window_->statusBar()->currentMessage().contains("masked"), qPrintable(window_->statusBar()->currentMessage()));
         QVERIFY(!doc->config().colors.classes.back().boxes[0].enabled);
+    }
+
+    // Sampling and the mask / sensor editors share the panes' left button: one at a time.
+    void samplingAndPaneEditorsExcludeEachOther()
+    {
+        open();
+        MaskEditor* mask = window_->paneEditors()->mask();
+        editor()->sampler()->setSampling(true);
+        mask->setEditing(true);
+        QVERIFY(mask->isEditing());
+        QVERIFY(!editor()->sampler()->isSampling());
+        editor()->sampler()->setSampling(true);
+        QVERIFY(!mask->isEditing());
+        window_->paneEditors()->sensors()->setEditing(true);
+        QVERIFY(!editor()->sampler()->isSampling());
     }
 
     void wandTakesTheBallFromOneClick()

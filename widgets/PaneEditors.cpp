@@ -37,6 +37,14 @@ void PaneEditors::exclusive(const QObject* from, bool on)
     if (from != distances_) distances_->setAdding(false);
     if (from != geometry_) geometry_->setEditing(false);
     if (from != marker_ && marker_->isMarking()) marker_->setMarking(false);
+    emit leftButtonTaken();
+}
+
+void PaneEditors::releaseLeftButton()
+{
+    mask_->setEditing(false);
+    sensors_->setEditing(false);
+    distances_->setAdding(false);
 }
 
 void PaneEditors::fillMenu(QMenu* camera)

@@ -40,9 +40,15 @@ public:
     void stopEditing();
     // Escape: an open polygon is dropped, then the editing ends.
     void escape();
+    // Mask, sensor and distance editing off, because another holder (colour sampling) takes
+    // the left button.
+    void releaseLeftButton();
 
 signals:
     void message(const QString& text);  // for the status bar
+    // One of the editors here took the panes' left button: holders outside (colour sampling)
+    // let go of it.
+    void leftButtonTaken();
 
 private:
     // `on` from one holder of the left button turns every other one off.
