@@ -99,17 +99,23 @@ std::vector<ConditionRow> conditionRows(const QualityRun& run)
     return out;
 }
 
-}  // namespace
-
-std::string qualityBreakdownMarkdown(const QualityRun& run, const std::vector<std::size_t>& variants)
+// A table's header: `first`, then one column per variant.
+std::string variantColumnsHeader(const QualityRun& run, const std::vector<std::size_t>& variants, const std::string& first)
 {
-    std::string md = "| condition |";
+    std::string md = "| " + first + " |";
     std::string rule = "|---|";
     for (std::size_t v : variants) {
         md += " " + run.variants[v].name + " |";
         rule += "---|";
     }
-    md += "\n" + rule + "\n";
+    return md + "\n" + rule + "\n";
+}
+
+}  // namespace
+
+std::string qualityBreakdownMarkdown(const QualityRun& run, const std::vector<std::size_t>& variants)
+{
+    std::string md = variantColumnsHeader(run, variants, "condition");
     for (const ConditionRow& row : conditionRows(run)) {
         md += "| " + row.label + " |";
         for (std::size_t v : variants) md += " " + pct(qualityTotal(run, v, row.filter)) + " |";
@@ -139,13 +145,7 @@ std::string qualityMissesMarkdown(const QualityRun& run, std::size_t variant)
 
 std::string qualityFalsePositivesMarkdown(const QualityRun& run, const std::vector<std::size_t>& variants)
 {
-    std::string md = "| what it hit (search, place) |";
-    std::string rule = "|---|";
-    for (std::size_t v : variants) {
-        md += " " + run.variants[v].name + " |";
-        rule += "---|";
-    }
-    md += "\n" + rule + "\n";
+    std::string md = variantColumnsHeader(run, variants, "what it hit (search, place)");
     std::vector<QualityTally> totals;
     std::vector<QualityTally> ballFree;
     for (std::size_t v : variants) {
