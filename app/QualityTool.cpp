@@ -23,6 +23,8 @@ std::vector<OptionSpec> qualityToolOptions()
         {"floors", true, false, "FILE  with --quality-matrix: check these floors as the gate test does"},
         {"write-floors", true, false, "FILE  with --quality-matrix: write floors (measured less a margin) to FILE"},
         {"threads", true, false, "N     with --quality-matrix: cells on N threads (default 1, honest timings; 0: all)"},
+        {"misses", false, false, "      with --quality-matrix: why balls were missed and what false positives hit, per condition"},
+        {"cells", true, false, "A,B   with --quality-matrix: only the cells whose name holds every one of these parts (e.g. dim,rods)"},
         {"deviations", true, false, "FILE  with --quality-matrix: also run each deviation from the thesis switched off (specific, combined)"},
     };
 }
@@ -92,7 +94,11 @@ int runQualityTool(const CommandLine& cl)
         if (!v || *v < 0 || *v > 256) return fail("--threads must be a whole number from 0 to 256, not '" + *t + "'");
         runOptions.threads = *v;
     }
-    const std::vector<OpticsCell> cells = qualityMatrixCells(matrix);
+    std::vector<OpticsCell> cells = qualityMatrixCells(matrix);
+    if (auto parts = cl.value("cells")) {
+        cells = filterOpticsCells(cells, *parts);
+        if (cells.empty()) return fail("--cells '" + *parts + "' matches no cell of the matrix");
+    }
     QualityRun run;
     Stopwatch clock;
     try {
@@ -116,6 +122,12 @@ int runQualityTool(const CommandLine& cl)
     md += "### Overall\n\n" + qualitySummaryMarkdown(run, shipped) + "\n";
     md += "### By condition (balls found)\n\n" + qualityBreakdownMarkdown(run, shipped) + "\n";
     md += "### The 12 worst cells (combined)\n\n" + qualityWorstCellsMarkdown(run, shipped.back(), 12) + "\n";
+    if (cl.has("misses")) {
+        md += "### Why balls were missed (combined; cause of each missed frame)\n\n" +
+              qualityMissesMarkdown(run, shipped.back()) + "\n";
+        md += "### Why balls were missed (specific)\n\n" + qualityMissesMarkdown(run, shipped.front()) + "\n";
+        md += "### What the false positives hit\n\n" + qualityFalsePositivesMarkdown(run, shipped) + "\n";
+    }
     if (run.variants.size() > shipped.size())
         md += "### Each deviation from the thesis switched off (the thesis' value)\n\n" + qualityDeviationsMarkdown(run) + "\n";
     bool fell = false;

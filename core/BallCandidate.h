@@ -13,7 +13,7 @@ std::string_view candidateSourceName(CandidateSource s);
 
 enum class RejectReason {
     None,             // accepted
-    OutsideArea,      // centre not on a processed pixel
+    OutsideArea,      // centre not on a processed pixel, or the circle reaches the rim (validation.refuse_at_rim)
     RadiusTooLarge,   // OpenCV circle larger than the expected radius at its distance (or, with
                       // opencv_hough.min_radius_ratio, far smaller)
     TooSmall,         // expected radius below validation.min_radius_px: too far to judge the shape

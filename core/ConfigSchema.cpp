@@ -397,6 +397,17 @@ std::vector<ConfigKey> buildSchema()
                           "ball_hint_class: share of the square's processed pixels of that class that counts as the ball's colour",
                           [](auto& c) -> auto& { return c.validation.ballHintMinPct; }));
 
+    // validation at the mirror rim (issue 9: where the optics matrix's false positives sat)
+    s.push_back(boolKey("validation.refuse_at_rim", false,
+                        "A candidate whose expected circle reaches past geometry.outer_radius less rim_margin_px is refused: a circle "
+                        "cut by the rim is judged on its inner part alone, which cut-off line ends and robot markers pass; off: judged "
+                        "like any other (and a ball cut by the rim can be found)",
+                        [](auto& c) -> auto& { return c.validation.refuseAtRim; }));
+    s.push_back(doubleKey("validation.rim_margin_px", "px", -50, 50, false,
+                          "refuse_at_rim: how far inside the outer radius a candidate's circle must end; larger refuses more of the "
+                          "far ring (balls there too), negative lets circles reach past the outer radius",
+                          [](auto& c) -> auto& { return c.validation.rimMarginPx; }));
+
     // algorithm
     ConfigKey alg{"algorithm.method", ValueType::Choice, "", 0, 0,
                   "Ball search: specific Hough (4.1), cv::HoughCircles (4.2), or specific then OpenCV when it fails (4.3)",

@@ -363,6 +363,10 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
     c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, ball.squareSizeAt(c.distancePx), classes, edges,
                            geometry, options, colour, roles);
     if (c.rejected != RejectReason::None) return;  // already out (outside the area, too large)
+    if (options.refuseAtRim && c.distancePx + c.expectedRadiusPx > geometry.options().outerRadius - options.rimMarginPx) {
+        c.rejected = RejectReason::OutsideArea;
+        return;
+    }
     c.rejected = firstFailedTest(c, options, roles.idOf(options.ballHint) != ColorClass::Unknown);
 }
 

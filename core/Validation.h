@@ -84,6 +84,15 @@ struct ValidationOptions {
     bool carpetByColour = true;
     CarpetTolerance carpetTolerance;
 
+    // The mirror rim (geometry.outer_radius): a candidate whose expected circle reaches farther
+    // out than outer_radius - rimMarginPx is refused (OutsideArea). The ring ends there, so such
+    // a circle is judged on its inner part alone, and on the optics matrix the cut-off ends of
+    // lines, robot markers and blurred rim pixels passed that way: most false positives sat
+    // there, against fewer balls found there (docs/evaluation.md). Off (the thesis): every
+    // candidate whose centre is processed is judged.
+    bool refuseAtRim = true;
+    double rimMarginPx = 1.0;  // px; negative lets a circle reach past the outer radius
+
     // The ball's colour class when the team knows it, by name ("none": no hint). When at least
     // ballHintMinPct of the square's processed pixels have that class, the colour tests (non-green,
     // non-black) are passed: the ball's own colour shows it is neither carpet nor robot. The shape

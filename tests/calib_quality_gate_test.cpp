@@ -18,6 +18,7 @@
 #include <QtTest>
 
 #include <cstdlib>
+#include <numeric>
 #include <set>
 
 using namespace omnitune;
@@ -179,6 +180,111 @@ private slots:
         QVERIFY2(checks[1].line.find("17.00 to go") != std::string::npos, checks[1].line.c_str());
         QVERIFY(!checks[2].passed);  // 10 % > 5 %
         QVERIFY(!checks[3].passed);  // no range sample to measure
+    }
+
+    // Every missed ball frame has one cause and every false positive one kind: the breakdown adds
+    // up to the totals it explains.
+    void missesAndFalsePositivesAddUp()
+    {
+        for (std::size_t v = 0; v < run_.variants.size(); ++v) {
+            const QualityTally t = qualityTotal(run_, v);
+            const int misses = std::accumulate(t.missCauses.begin(), t.missCauses.end(), 0);
+            QCOMPARE(misses, t.withBall - t.correct);
+            QVERIFY(t.missesRadiusOff <= misses);
+            QCOMPARE(std::accumulate(t.falsePositiveKinds.begin(), t.falsePositiveKinds.end(), 0), t.falsePositives);
+        }
+        const std::string md = qualityMissesMarkdown(run_, shippedVariants(run_).back());
+        QVERIFY2(md.find("| all ball cells | ") != std::string::npos, md.c_str());
+        QVERIFY2(md.find("| distractors: rods | ") != std::string::npos || !full_, md.c_str());
+        QVERIFY(qualityFalsePositivesMarkdown(run_, shippedVariants(run_)).find("| all |") != std::string::npos);
+    }
+
+    // A miss is blamed on the candidate at the ball that got farthest through validation.
+    void missCauseIsTheFarthestTest()
+    {
+        TruthRow truth;
+        truth.ballVisible = true;
+        truth.px = 100;
+        truth.py = 100;
+        truth.radiusPx = 6;
+        ValidationOptions v;
+        PipelineResult r;
+        QCOMPARE(diagnoseMiss(r, truth, v), MissCause::NoCandidate);
+        BallCandidate far;
+        far.x = 120;
+        far.y = 100;
+        far.rejected = RejectReason::NotChosen;
+        r.candidates.push_back(far);
+        QCOMPARE(diagnoseMiss(r, truth, v), MissCause::NoCandidate);  // 20 px away: not at the ball
+        BallCandidate green;
+        green.x = 103;
+        green.y = 102;
+        green.expectedRadiusPx = 6;
+        green.rejected = RejectReason::NonGreen;
+        r.candidates.push_back(green);
+        QCOMPARE(diagnoseMiss(r, truth, v), MissCause::NonGreen);
+        BallCandidate round = green;
+        round.rejected = RejectReason::Circularity;
+        round.scores.circularityPct = v.minCircularityPct - 1;
+        round.expectedRadiusPx = 10;  // the model expects 10 px where the ball shows 6
+        r.candidates.push_back(round);
+        bool radiusOff = false;
+        QCOMPARE(diagnoseMiss(r, truth, v, &radiusOff), MissCause::Circularity);
+        QVERIFY(radiusOff);
+        r.candidates.back().scores.circularityPct = v.minCircularityPct;  // the share passed: the fit failed
+        QCOMPARE(diagnoseMiss(r, truth, v), MissCause::CircleOff);
+        r.candidates.back().rejected = RejectReason::NotChosen;
+        r.candidates.back().expectedRadiusPx = 6.5;
+        QCOMPARE(diagnoseMiss(r, truth, v, &radiusOff), MissCause::LostToOther);
+        QVERIFY(!radiusOff);
+        r.candidates.back().rejected = RejectReason::None;
+        QCOMPARE(diagnoseMiss(r, truth, v), MissCause::PositionOff);
+    }
+
+    // A false positive is placed at the rim, the body, beside the mask or in the field, and
+    // blamed on the search that proposed it.
+    void falsePositivePlaces()
+    {
+        Config config;  // centre (320, 240), radii 50..240
+        PipelineResult r;
+        BallCandidate c;
+        c.source = CandidateSource::OpenCvHough;
+        r.candidates.push_back(c);
+        r.detection.found = true;
+        r.detection.candidate = 0;
+        r.detection.radiusPx = 6;
+        auto at = [&](double x, double y) {
+            r.detection.px = x;
+            r.detection.py = y;
+            return diagnoseFalsePositive(r, config);
+        };
+        QCOMPARE(at(320 + 235, 240).place, FalsePositivePlace::Rim);
+        QCOMPARE(at(320 + 55, 240).place, FalsePositivePlace::Body);
+        QCOMPARE(at(320 + 120, 240).place, FalsePositivePlace::Field);
+        QCOMPARE(at(320 + 120, 240).source, CandidateSource::OpenCvHough);
+        config.mask = cv::Mat(480, 640, CV_8UC1, cv::Scalar(255));
+        config.mask.col(320 + 126).setTo(0);  // a rod 6 px beside the detection
+        QCOMPARE(at(320 + 120, 240).place, FalsePositivePlace::Mask);
+        QCOMPARE(at(320 + 100, 240).place, FalsePositivePlace::Field);
+        for (std::size_t k = 0; k < kFalsePositiveKindCount; ++k)
+            QCOMPARE(falsePositiveKindIndex(falsePositiveKindAt(k)), k);
+    }
+
+    // --cells: only the cells holding every part of the filter.
+    void cellFilter()
+    {
+        const std::vector<OpticsCell> all = qualityMatrixCells(floors_.matrix);
+        const std::vector<OpticsCell> some = filterOpticsCells(all, "dim,rods");
+        QVERIFY(!some.empty());
+        for (const OpticsCell& c : some) {
+            QCOMPARE(c.light, OpticsLight::Dim);
+            QCOMPARE(c.distractors, OpticsDistractors::RodsOcclusion);
+        }
+        int expected = 0;
+        for (const OpticsCell& c : all) expected += c.light == OpticsLight::Dim && c.distractors == OpticsDistractors::RodsOcclusion;
+        QCOMPARE(int(some.size()), expected);
+        QCOMPARE(filterOpticsCells(all, "").size(), all.size());
+        QVERIFY(filterOpticsCells(all, "dim,no-such-part").empty());
     }
 
     void floors_data()

@@ -464,6 +464,32 @@ private slots:
         QVERIFY2(cand.rejected != RejectReason::None, qPrintable(verdict(cand)));
     }
 
+    // validation.refuse_at_rim: a circle that reaches past the outer radius (less the margin) is
+    // refused, however ball-like its inner part; one that ends inside is judged as usual; off,
+    // the cut circle is judged on its inner part and passes.
+    void refusedAtTheRim()
+    {
+        Config c;
+        c.geometry.outerRadius = 180;  // a smaller mirror: the far ball is large enough to judge
+        c.validation.rimMarginPx = 1.0;
+        const double outer = c.geometry.outerRadius;
+        const double cut = outer - 0.5 * expectedRadius(c, outer);  // its outer rim beyond the outer radius
+        const double inside = outer - expectedRadius(c, outer) - c.validation.rimMarginPx - 2.0;
+        for (double distance : {cut, inside}) {
+            cv::Mat frame = greenField(c);
+            const cv::Point p = drawBall(frame, c, distance, 0);
+            const BallCandidate on = validateFrame(c, frame, p);
+            Config off = c;
+            off.validation.refuseAtRim = false;
+            const BallCandidate judged = validateFrame(off, frame, p);
+            QVERIFY2(judged.rejected == RejectReason::None, qPrintable(QString::number(distance) + ": " + verdict(judged)));
+            if (distance == cut)
+                QVERIFY2(on.rejected == RejectReason::OutsideArea, qPrintable(verdict(on)));
+            else
+                QVERIFY2(on.rejected == RejectReason::None, qPrintable(verdict(on)));
+        }
+    }
+
     void thresholdsAreTheConfigs()
     {
         // The same orange ball fails when the circularity threshold is raised above its score.

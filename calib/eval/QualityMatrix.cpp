@@ -1,5 +1,7 @@
 #include "calib/eval/QualityMatrix.h"
 
+#include <algorithm>
+
 namespace omnitune {
 
 namespace {
@@ -52,6 +54,25 @@ std::vector<OpticsCell> qualityMatrixCells(const QualityMatrixOptions& options)
                 }
         }
     return cells;
+}
+
+std::vector<OpticsCell> filterOpticsCells(const std::vector<OpticsCell>& cells, const std::string& parts)
+{
+    std::vector<std::string> wanted;
+    std::size_t start = 0;
+    while (start <= parts.size()) {
+        const std::size_t comma = std::min(parts.find(',', start), parts.size());
+        if (comma > start) wanted.push_back(parts.substr(start, comma - start));
+        start = comma + 1;
+    }
+    std::vector<OpticsCell> out;
+    for (const OpticsCell& c : cells) {
+        const std::string name = opticsCellName(c);
+        bool all = true;
+        for (const std::string& w : wanted) all = all && name.find(w) != std::string::npos;
+        if (all) out.push_back(c);
+    }
+    return out;
 }
 
 }  // namespace omnitune

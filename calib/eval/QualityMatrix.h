@@ -4,6 +4,7 @@
 // cell, many cells: the grid's breadth, not its depth, is what a floor should hold.
 #include "calib/sim/optics/OpticsCell.h"
 
+#include <string>
 #include <vector>
 
 namespace omnitune {
@@ -23,5 +24,9 @@ struct QualityMatrixOptions {
 // somewhere; 640x480 frames come through the hyperbolic mirror, 480x480 through the spherical
 // one (the square sensors of the real teams in issue 9 sit behind such mirrors).
 std::vector<OpticsCell> qualityMatrixCells(const QualityMatrixOptions& options = {});
+
+// The cells whose opticsCellName holds every comma-separated part of `parts` ("dim,rods",
+// "480x480"); all cells when `parts` is empty. For quick runs on a few conditions.
+std::vector<OpticsCell> filterOpticsCells(const std::vector<OpticsCell>& cells, const std::string& parts);
 
 }  // namespace omnitune

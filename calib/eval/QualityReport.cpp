@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <functional>
 
 namespace omnitune {
 
@@ -65,27 +66,27 @@ std::string qualitySummaryMarkdown(const QualityRun& run, const std::vector<std:
     return md;
 }
 
-std::string qualityBreakdownMarkdown(const QualityRun& run, const std::vector<std::size_t>& variants)
+namespace {
+
+// A row of the by-condition tables: a label and the ball cells it sums.
+struct ConditionRow {
+    std::string label;
+    std::function<bool(const OpticsCell&)> filter;
+};
+
+// "ball: orange", "light: dim", ... : the distinct values of each property in matrix order.
+std::vector<ConditionRow> conditionRows(const QualityRun& run)
 {
-    std::string md = "| condition |";
-    std::string rule = "|---|";
-    for (std::size_t v : variants) {
-        md += " " + run.variants[v].name + " |";
-        rule += "---|";
-    }
-    md += "\n" + rule + "\n";
-    // The distinct values of one property in matrix order, each a row.
-    auto rows = [&](const std::string& label, auto property) {
+    std::vector<ConditionRow> out;
+    auto rows = [&](const std::string& label, std::string (*property)(const OpticsCell&)) {
         std::vector<std::string> seen;
         for (const QualityCellResult& c : run.cells) {
             if (!c.cell.ballPresent) continue;
             const std::string value = property(c.cell);
             if (std::find(seen.begin(), seen.end(), value) != seen.end()) continue;
             seen.push_back(value);
-            md += "| " + label + ": " + value + " |";
-            for (std::size_t v : variants)
-                md += " " + pct(qualityTotal(run, v, [&](const OpticsCell& x) { return x.ballPresent && property(x) == value; })) + " |";
-            md += "\n";
+            out.push_back({label + ": " + value,
+                           [property, value](const OpticsCell& x) { return x.ballPresent && property(x) == value; }});
         }
     };
     rows("ball", [](const OpticsCell& c) { return std::string(ballKindName(c.ball)); });
@@ -95,7 +96,79 @@ std::string qualityBreakdownMarkdown(const QualityRun& run, const std::vector<st
     rows("frame", [](const OpticsCell& c) {
         return std::to_string(c.image.width) + "x" + std::to_string(c.image.height) + " " + opticsMirrorName(c.mirror);
     });
+    return out;
+}
+
+// A table's header: `first`, then one column per variant.
+std::string variantColumnsHeader(const QualityRun& run, const std::vector<std::size_t>& variants, const std::string& first)
+{
+    std::string md = "| " + first + " |";
+    std::string rule = "|---|";
+    for (std::size_t v : variants) {
+        md += " " + run.variants[v].name + " |";
+        rule += "---|";
+    }
+    return md + "\n" + rule + "\n";
+}
+
+}  // namespace
+
+std::string qualityBreakdownMarkdown(const QualityRun& run, const std::vector<std::size_t>& variants)
+{
+    std::string md = variantColumnsHeader(run, variants, "condition");
+    for (const ConditionRow& row : conditionRows(run)) {
+        md += "| " + row.label + " |";
+        for (std::size_t v : variants) md += " " + pct(qualityTotal(run, v, row.filter)) + " |";
+        md += "\n";
+    }
     return md;
+}
+
+std::string qualityMissesMarkdown(const QualityRun& run, std::size_t variant)
+{
+    std::string md = "| condition | missed |";
+    std::string rule = "|---|---|";
+    for (std::size_t i = 0; i < kMissCauseCount; ++i) {
+        md += " " + std::string(missCauseName(MissCause(i))) + " |";
+        rule += "---|";
+    }
+    md += " radius model off |\n" + rule + "---|\n";
+    auto row = [&](const std::string& label, const QualityTally& t) {
+        md += "| " + label + " | " + std::to_string(t.withBall - t.correct) + " |";
+        for (int n : t.missCauses) md += " " + (n ? std::to_string(n) : std::string("·")) + " |";
+        md += " " + std::to_string(t.missesRadiusOff) + " |\n";
+    };
+    row("all ball cells", qualityTotal(run, variant, ball));
+    for (const ConditionRow& r : conditionRows(run)) row(r.label, qualityTotal(run, variant, r.filter));
+    return md;
+}
+
+std::string qualityFalsePositivesMarkdown(const QualityRun& run, const std::vector<std::size_t>& variants)
+{
+    std::string md = variantColumnsHeader(run, variants, "what it hit (search, place)");
+    std::vector<QualityTally> totals;
+    std::vector<QualityTally> ballFree;
+    for (std::size_t v : variants) {
+        totals.push_back(qualityTotal(run, v));
+        ballFree.push_back(qualityTotal(run, v, [](const OpticsCell& c) { return !c.ballPresent; }));
+    }
+    for (std::size_t k = 0; k < kFalsePositiveKindCount; ++k) {
+        bool any = false;
+        for (const QualityTally& t : totals) any = any || t.falsePositiveKinds[k] > 0;
+        if (!any) continue;
+        const FalsePositiveKind kind = falsePositiveKindAt(k);
+        md += "| " + std::string(candidateSourceName(kind.source)) + ", " +
+              std::string(falsePositivePlaceName(kind.place)) + " |";
+        for (std::size_t i = 0; i < totals.size(); ++i)
+            md += " " + std::to_string(totals[i].falsePositiveKinds[k]) + " (" +
+                  std::to_string(ballFree[i].falsePositiveKinds[k]) + " ball-free) |";
+        md += "\n";
+    }
+    md += "| all |";
+    for (std::size_t i = 0; i < totals.size(); ++i)
+        md += " " + std::to_string(totals[i].falsePositives) + " (" + std::to_string(ballFree[i].falsePositives) +
+              " ball-free) |";
+    return md + "\n";
 }
 
 std::string qualityDeviationsMarkdown(const QualityRun& run)

@@ -14,6 +14,15 @@ std::string qualitySummaryMarkdown(const QualityRun& run, const std::vector<std:
 // Balls found per ball kind, light, distractors and frame size (rows), one column per variant.
 std::string qualityBreakdownMarkdown(const QualityRun& run, const std::vector<std::size_t>& variants);
 
+// Why the variant missed the balls it missed (calib/eval/FrameDiagnosis.h): one row for all ball
+// cells, then one per condition as in qualityBreakdownMarkdown; a column per cause, and how many
+// of the misses had a candidate at the ball whose expected radius was off the true one.
+std::string qualityMissesMarkdown(const QualityRun& run, std::size_t variant);
+
+// What the false positives hit (which search proposed them, where they sit), one column per
+// variant, with how many came from ball-free frames.
+std::string qualityFalsePositivesMarkdown(const QualityRun& run, const std::vector<std::size_t>& variants);
+
 // Each deviation switched to the thesis' value: balls found and false-positive frames beside
 // the same algorithm as shipped (the variant without overrides), and the difference.
 std::string qualityDeviationsMarkdown(const QualityRun& run);

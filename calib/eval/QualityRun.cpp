@@ -46,6 +46,9 @@ void QualityTally::add(const QualityTally& o)
     falsePositives += o.falsePositives;
     rangeErrorsM.insert(rangeErrorsM.end(), o.rangeErrorsM.begin(), o.rangeErrorsM.end());
     timesMs.insert(timesMs.end(), o.timesMs.begin(), o.timesMs.end());
+    for (std::size_t i = 0; i < missCauses.size(); ++i) missCauses[i] += o.missCauses[i];
+    missesRadiusOff += o.missesRadiusOff;
+    for (std::size_t i = 0; i < falsePositiveKinds.size(); ++i) falsePositiveKinds[i] += o.falsePositiveKinds[i];
 }
 
 double QualityTally::detectionPct() const { return withBall ? 100.0 * correct / withBall : 0.0; }
@@ -126,13 +129,13 @@ public:
             } catch (const std::exception& e) {
                 throw std::invalid_argument(cr.name + " (" + variant.name + "): the fitted config is refused: " + e.what());
             }
-            cr.tallies.push_back(judgeFrames(*slot, rendered));
+            cr.tallies.push_back(judgeFrames(*slot, config, rendered));
         }
         return cr;
     }
 
 private:
-    QualityTally judgeFrames(Pipeline& pipeline, const OpticsCellFrames& rendered)
+    QualityTally judgeFrames(Pipeline& pipeline, const Config& config, const OpticsCellFrames& rendered)
     {
         QualityTally tally;
         for (std::size_t f = 0; f < rendered.frames.size(); ++f) {
@@ -144,10 +147,18 @@ private:
             const TruthVerdict verdict = judge(outcome, &truth, options_.evaluation);
             ++tally.frames;
             if (outcome.processed) tally.timesMs.push_back(outcome.timeMs);
-            tally.falsePositives += verdict == TruthVerdict::FalsePositive;
+            if (verdict == TruthVerdict::FalsePositive) {
+                ++tally.falsePositives;
+                ++tally.falsePositiveKinds[falsePositiveKindIndex(diagnoseFalsePositive(result_, config))];
+            }
             if (!truth.ballVisible) continue;
             ++tally.withBall;
-            if (verdict != TruthVerdict::Correct) continue;
+            if (verdict != TruthVerdict::Correct) {
+                bool radiusOff = false;
+                ++tally.missCauses[std::size_t(diagnoseMiss(result_, truth, config.validation, &radiusOff))];
+                tally.missesRadiusOff += radiusOff;
+                continue;
+            }
             ++tally.correct;
             const double trueRange = std::hypot(truth.xM, truth.yM);
             if (trueRange <= options_.rangeWithinM)

@@ -5,10 +5,12 @@
 // and tallies per cell; groups (per ball kind, light, distractors, size, overall) add cells up.
 #include "calib/eval/ConfigOverride.h"
 #include "calib/eval/Evaluation.h"
+#include "calib/eval/FrameDiagnosis.h"
 #include "calib/sim/optics/OpticsCell.h"
 #include "core/Algorithm.h"
 #include "core/Progress.h"
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -40,6 +42,12 @@ struct QualityTally {
     // horizontal distance from the robot, m.
     std::vector<double> rangeErrorsM;
     std::vector<double> timesMs;  // whole pipeline per frame
+    // Why each missed ball frame was missed (indexed by MissCause), how many of those misses had
+    // a candidate at the ball whose expected radius was off the true one by more than the circle
+    // fit allows, and what each false positive hit (indexed by falsePositiveKindIndex).
+    std::array<int, kMissCauseCount> missCauses{};
+    int missesRadiusOff = 0;
+    std::array<int, kFalsePositiveKindCount> falsePositiveKinds{};
 
     void add(const QualityTally& other);
     double detectionPct() const;      // correct / withBall; 0 without ball frames
