@@ -48,6 +48,7 @@ void ColourSampler::setMode(bool on)
     active_ = false;
     view_->setSampling(on);
     if (samplingAction_) samplingAction_->setChecked(on);
+    for (QAction* a : sizeActions_) a->setEnabled(on);
     emit samplingChanged(on);  // marking and geometry editing give the left button up
     emit message(on ? tr("Sampling colours into the selected class: drag adds (Ctrl: removes), Shift+drag a rectangle, "
                          "W the magic wand, [ ] the brush size; C ends")
@@ -94,12 +95,15 @@ void ColourSampler::fillMenu(QMenu* menu)
     wandAction_->setCheckable(true);
     wandAction_->setShortcut(QKeySequence(Qt::Key_W));
     connect(wandAction_, &QAction::toggled, this, [this](bool on) { setTool(on ? Tool::Wand : Tool::Brush); });
+    // Only while sampling: the mask editor has its own [ and ] (an ambiguous shortcut fires neither).
     QAction* smaller = menu->addAction(tr("Smaller brush"));
     smaller->setShortcut(QKeySequence(Qt::Key_BracketLeft));
     connect(smaller, &QAction::triggered, this, [this] { setBrushRadius(radius_ - 1); });
     QAction* larger = menu->addAction(tr("Larger brush"));
     larger->setShortcut(QKeySequence(Qt::Key_BracketRight));
     connect(larger, &QAction::triggered, this, [this] { setBrushRadius(radius_ + 1); });
+    sizeActions_ = {smaller, larger};
+    for (QAction* a : sizeActions_) a->setEnabled(sampling_);
 }
 
 void ColourSampler::press(QPointF p, Qt::KeyboardModifiers modifiers)

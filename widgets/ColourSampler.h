@@ -90,6 +90,7 @@ private:
     ConfigDocument* doc_;
     PipelineView* view_;
     QAction* samplingAction_ = nullptr;
+    std::vector<QAction*> sizeActions_;  // [ and ]: enabled while sampling
     QAction* wandAction_ = nullptr;
     bool sampling_ = false;
     int class_ = -1;
