@@ -20,6 +20,8 @@
 
 #include <QDialogButtonBox>
 #include <QDir>
+#include <QMouseEvent>
+#include <QApplication>
 #include <QLabel>
 #include <QPushButton>
 #include <QRadioButton>
@@ -218,6 +220,30 @@ private slots:
         const int now = doc->undoStack()->count();
         QTest::mouseClick(pane, Qt::LeftButton, {}, pane->toWidget(QPointF(g.centerX + 125, g.centerY + 100)).toPoint());
         QCOMPARE(doc->undoStack()->count(), now);
+    }
+
+    void geometryDragCancelledWhenAnotherEditorTakesOver()
+    {
+        QTest::keyClick(window_.get(), Qt::Key_G);
+        QVERIFY(window_->geometryEditor()->isEditing());
+        ConfigDocument* doc = window_->document();
+        const GeometryOptions g = doc->config().geometry;
+        const int steps = doc->undoStack()->count();
+        const QPoint c = acquired()->toWidget(QPointF(g.centerX, g.centerY)).toPoint();
+        const QPoint to = acquired()->toWidget(QPointF(g.centerX + 12, g.centerY - 8)).toPoint();
+        QTest::mousePress(acquired(), Qt::LeftButton, {}, c);
+        // A move with the button held, sent to the pane itself (QTest::mouseMove goes through the
+        // cursor, which the offscreen platform delivers without the button).
+        QMouseEvent move(QEvent::MouseMove, QPointF(to), QPointF(acquired()->mapToGlobal(to)), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(acquired(), &move);
+        QVERIFY(doc->config().geometry.centerY < g.centerY - 4);  // the panes follow the drag live
+        QTest::keyClick(window_.get(), Qt::Key_M);            // the mask editor takes the button mid-drag
+        QVERIFY(!window_->geometryEditor()->isEditing());
+        QCOMPARE(doc->config().geometry.centerY, g.centerY);  // the drag is cancelled, not left half-applied
+        QCOMPARE(doc->undoStack()->count(), steps);
+        QTest::mouseRelease(acquired(), Qt::LeftButton, {}, to);
+        QCOMPARE(doc->config().geometry.centerY, g.centerY);
+        QTest::keyClick(window_.get(), Qt::Key_Escape);
     }
 
     void oneEditorHoldsTheLeftButton()

@@ -22,6 +22,9 @@ void GeometryEditor::setEditing(bool on)
 {
     if (on == editing_) return;
     editing_ = on;
+    // Switched off mid-drag (another editor took the left button): the drag is cancelled, so the
+    // live-applied position must not stay behind without an undo step.
+    if (grabbed_ != Handle::None) doc_->applyConfig(start_);
     grabbed_ = Handle::None;
     emit editingChanged(on);  // truth marking gives the left button up first
     view_->setEditingGeometry(on);
