@@ -84,6 +84,9 @@ private slots:
         QCOMPARE(now.whiteX, before.whiteX + dx);  // the other region stays
         QCOMPARE(doc->undoStack()->count(), steps + 2);
 
+        if (qEnvironmentVariableIsSet("OMNITUNE_SCREENSHOT_DIR"))  // to look at the regions
+            window_->grab().save(qEnvironmentVariable("OMNITUNE_SCREENSHOT_DIR") + "/reference-regions.png");
+
         // A press away from both changes nothing.
         drag(pane, QPointF(before.blackX - 60, before.blackY), QPointF(before.blackX - 40, before.blackY + 10));
         QCOMPARE(doc->undoStack()->count(), steps + 2);

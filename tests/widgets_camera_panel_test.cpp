@@ -246,6 +246,14 @@ private slots:
         const double lastV = panel.plot()->vSeries()->at(iterations.count() - 1).y();  // V - target
         QVERIFY2(std::abs(lastV) <= config.cameraAuto.chromaTolerance, qPrintable(QString::number(lastV)));
 
+        if (qEnvironmentVariableIsSet("OMNITUNE_SCREENSHOT_DIR")) {  // to look at the histogram and the plots
+            panel.resize(420, 900);
+            Frame f;
+            QVERIFY(!cam.grab(f));
+            panel.showFrame(f.image);
+            panel.grab().save(qEnvironmentVariable("OMNITUNE_SCREENSHOT_DIR") + "/camera-panel.png");
+        }
+
         // The next run starts from an empty plot and shows only its own iterations.
         const int firstRun = iterations.count();
         QTest::mouseClick(panel.startButton(), Qt::LeftButton);

@@ -67,6 +67,14 @@ CalibrationPlot::Chart CalibrationPlot::makeChart(const QString& title, const QS
     c.x->setLabelFormat(QStringLiteral("%d"));
     c.x->setRange(0, kMinIterations);
     c.y = new QValueAxis;
+    c.y->setTickCount(3);
+    c.y->setLabelFormat(QStringLiteral("%.3g"));
+    QFont small = c.chart->font();
+    small.setPointSizeF(small.pointSizeF() * 0.8);
+    for (QValueAxis* a : {c.x, c.y}) a->setLabelsFont(small);
+    QFont heading = small;
+    heading.setBold(true);
+    c.chart->setTitleFont(heading);
     c.chart->addAxis(c.x, Qt::AlignBottom);
     c.chart->addAxis(c.y, Qt::AlignLeft);
     for (QLineSeries* s : {c.series, c.target}) {

@@ -10,6 +10,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
@@ -43,7 +44,16 @@ const char* const kGoodStyle = "color: #1b7a2e;";
 
 CameraPanel::CameraPanel(QWidget* parent) : QWidget(parent)
 {
-    auto* layout = new QVBoxLayout(this);
+    // Rows, histogram and plots are taller than a laptop's dock: they scroll.
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto* content = new QWidget(scroll);
+    scroll->setWidget(content);
+    outer->addWidget(scroll);
+    auto* layout = new QVBoxLayout(content);
     rowsBox_ = new QWidget(this);
     layout->addWidget(rowsBox_);
     auto* autoRow = new QHBoxLayout;
@@ -60,6 +70,7 @@ CameraPanel::CameraPanel(QWidget* parent) : QWidget(parent)
     histogram_ = new IntensityHistogramView(live);
     msv_ = new QLabel(tr("No frame yet"), live);
     msv_->setWordWrap(true);
+    msv_->setMinimumHeight(2 * msv_->fontMetrics().lineSpacing());  // both lines, also when squeezed
     msv_->setToolTip(tr("MSV over the pixels the detector uses; U and V of the white reference region "
                         "(neutral at camera_auto.chroma_target); grey level of the black reference region"));
     liveLayout->addWidget(histogram_);
@@ -135,7 +146,7 @@ void CameraPanel::showFrame(const cv::Mat& bgr)
     }
     histogram_->setHistogram(m.histogram, m.msv, options_.msvTarget, options_.msvTolerance);
     const bool onTarget = std::abs(m.msv - options_.msvTarget) <= options_.msvTolerance;
-    QString text = tr("MSV %1 (target %2 \u00b1 %3) \u00b7 white U %4 V %5 \u00b7 black %6")
+    QString text = tr("MSV %1 (target %2 \u00b1 %3)\nwhite region U %4 V %5, black region %6")
                        .arg(m.msv, 0, 'f', 2)
                        .arg(options_.msvTarget, 0, 'f', 2)
                        .arg(options_.msvTolerance, 0, 'f', 2)
