@@ -61,7 +61,7 @@ private slots:
 
         // Inside the white region: it moves by the drag, keeping its size.
         const QRect white = editor()->region(Region::White);
-        auto [from, to] = drag(pane, QRectF(white).center(), QRectF(white).center() + QPointF(24, 14));
+        auto [from, to] = dragOnPane(pane, QRectF(white).center(), QRectF(white).center() + QPointF(24, 14));
         const int dx = int(std::lround(to.x() - from.x())), dy = int(std::lround(to.y() - from.y()));
         QVERIFY(dx > 15 && dy > 8);
         const CameraAutoOptions& now = doc->config().cameraAuto;
@@ -74,7 +74,7 @@ private slots:
 
         // Just outside the black region's lower right corner: it grows from there, its top left stays.
         const QRectF black(editor()->region(Region::Black));
-        std::tie(from, to) = drag(pane, black.bottomRight() + QPointF(1.5, 1.5), black.bottomRight() + QPointF(11.5, 7.5));
+        std::tie(from, to) = dragOnPane(pane, black.bottomRight() + QPointF(1.5, 1.5), black.bottomRight() + QPointF(11.5, 7.5));
         const int gx = int(std::lround(to.x() - from.x())), gy = int(std::lround(to.y() - from.y()));
         QCOMPARE(now.blackX, before.blackX);
         QCOMPARE(now.blackY, before.blackY);
@@ -88,7 +88,7 @@ private slots:
             window_->grab().save(qEnvironmentVariable("OMNITUNE_SCREENSHOT_DIR") + "/reference-regions.png");
 
         // A press away from both changes nothing.
-        drag(pane, QPointF(before.blackX - 60, before.blackY), QPointF(before.blackX - 40, before.blackY + 10));
+        dragOnPane(pane, QPointF(before.blackX - 60, before.blackY), QPointF(before.blackX - 40, before.blackY + 10));
         QCOMPARE(doc->undoStack()->count(), steps + 2);
 
         doc->undoStack()->undo();
@@ -106,7 +106,7 @@ private slots:
         window_->pipelineView()->transform()->fit();
         ImageView* pane = window_->pipelineView()->pane(PipelineView::Acquired);
         const QRectF white(editor()->region(Region::White));
-        drag(pane, white.center(), QPointF(c.geometry.imageWidth + 40, -40));  // beyond the top right corner
+        dragOnPane(pane, white.center(), QPointF(c.geometry.imageWidth + 40, -40));  // beyond the top right corner
         QCOMPARE(c.cameraAuto.whiteY, 0);
         QCOMPARE(c.cameraAuto.whiteX + c.cameraAuto.whiteWidth, c.geometry.imageWidth);
         QCOMPARE(c.cameraAuto.whiteWidth, int(white.width()));
@@ -126,17 +126,6 @@ private slots:
 
 private:
     ReferenceRegionEditor* editor() const { return window_->paneEditors()->referenceRegions(); }
-    // Drags with the left button; returns the image points the pane reported for press and release.
-    static std::pair<QPointF, QPointF> drag(ImageView* pane, QPointF from, QPointF to)
-    {
-        const QPoint a = pane->toWidget(from).toPoint(), b = pane->toWidget(to).toPoint();
-        QTest::mousePress(pane, Qt::LeftButton, {}, a);
-        QTest::mouseMove(pane, (a + b) / 2);
-        QTest::mouseMove(pane, b);
-        QTest::mouseRelease(pane, Qt::LeftButton, {}, b);
-        return {pane->toImage(QPointF(a)), pane->toImage(QPointF(b))};
-    }
-
     QTemporaryDir dir_;
     std::unique_ptr<MainWindow> window_;
 };

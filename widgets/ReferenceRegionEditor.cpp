@@ -56,7 +56,7 @@ void dragEdges(int& low, int& high, bool moveLow, bool moveHigh, int d, int size
 }  // namespace
 
 ReferenceRegionEditor::ReferenceRegionEditor(ConfigDocument* doc, PipelineView* view, QObject* parent)
-    : QObject(parent), doc_(doc), view_(view)
+    : QObject(parent), doc_(doc), view_(view), drag_(doc)
 {
     connectPaneInput(view_, this, &ReferenceRegionEditor::onPressed, &ReferenceRegionEditor::onDragged,
                      &ReferenceRegionEditor::onReleased);
@@ -79,10 +79,8 @@ void ReferenceRegionEditor::fillMenu(QMenu* menu)
 void ReferenceRegionEditor::setEditing(bool on)
 {
     if (on == editing_) return;
-    if (grab_.region != Region::None) {  // a drag cut short (Esc, K while dragging): back to where it began
-        grab_ = {};
-        if (moved_) doc_->applyConfig(start_);
-    }
+    drag_.cancel();  // a drag cut short (Esc, K while dragging): back to where it began
+    grab_ = {};
     editing_ = on;
     emit editingChanged(on);  // the other editors give the left button up first
     holdPanes(view_, this, on);
@@ -127,18 +125,17 @@ ReferenceRegionEditor::Grab ReferenceRegionEditor::grabAt(QPointF p) const
 void ReferenceRegionEditor::onPressed(QPointF p)
 {
     grab_ = grabAt(p);
-    moved_ = false;
     if (grab_.region == Region::None) {
         emit message(tr("Press inside a reference region to move it, on a corner to resize it"));
         return;
     }
-    start_ = doc_->config();
+    drag_.begin();
     pressed_ = p;
 }
 
 Config ReferenceRegionEditor::dragged(QPointF p) const
 {
-    Config c = start_;
+    Config c = drag_.start();
     const RegionFields f = fields(c, grab_.region);
     const int dx = int(std::lround(p.x() - pressed_.x())), dy = int(std::lround(p.y() - pressed_.y()));
     int right = *f.x + *f.width, bottom = *f.y + *f.height;
@@ -153,9 +150,7 @@ void ReferenceRegionEditor::onDragged(QPointF p)
 {
     if (grab_.region == Region::None) return;
     const Config next = dragged(p);
-    if (regionOf(next, grab_.region) == region(grab_.region)) return;
-    moved_ = true;
-    if (checkConfig(next).empty()) doc_->applyConfig(next);  // live, without an undo step per mouse move
+    if (regionOf(next, grab_.region) != region(grab_.region)) drag_.show(next);
 }
 
 void ReferenceRegionEditor::onReleased(QPointF p)
@@ -164,13 +159,11 @@ void ReferenceRegionEditor::onReleased(QPointF p)
     onDragged(p);
     const Grab was = grab_;
     grab_ = {};
-    if (!moved_) return;
-    const Config next = doc_->config();  // the last valid position of the drag
-    doc_->applyConfig(start_);           // the undo step goes from where the drag began
     const bool move = was.left && was.right;
     const QString what = (move ? tr("Move %1 region") : tr("Resize %1 region")).arg(regionName(was.region).toLower());
-    if (const auto why = doc_->replaceConfig(next, what)) {
-        emit message(*why);
+    std::optional<QString> refused;
+    if (!drag_.finish(what, &refused)) {
+        if (refused) emit message(*refused);
         return;
     }
     const QRect r = region(was.region);

@@ -6,6 +6,7 @@
 // one undo step in the window's stack (ConfigDocument); Escape or K ends the mode. The regions
 // stay inside the frame (geometry.image_width / image_height) and at least one pixel wide.
 #include "core/Config.h"
+#include "widgets/ConfigDrag.h"
 
 #include <QObject>
 #include <QPointF>
@@ -63,8 +64,7 @@ private:
     QAction* modeAction_ = nullptr;
     bool editing_ = false;
     Grab grab_;
-    bool moved_ = false;
-    Config start_;     // as the drag began: the undo step goes from here
+    ConfigDrag drag_;
     QPointF pressed_;  // image px of the press
     std::vector<QWidget*> sketches_;
 };
