@@ -2,6 +2,7 @@
 // Shared by the offscreen tests of the workbench window: a scratch copy of the demo session,
 // answering modal message boxes, and waiting (event driven) for a frame's run.
 #include "app/MainWindow.h"
+#include "widgets/ImageView.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -69,6 +70,18 @@ inline bool waitForFrame(MainWindow& window, int frame)
         spy.wait(200);
     }
     return false;
+}
+
+// Drags with the left button on a pane from image point `from` to `to`, through the middle;
+// returns the image points the pane reported for press and release (whole widget px).
+inline std::pair<QPointF, QPointF> dragOnPane(ImageView* pane, QPointF from, QPointF to)
+{
+    const QPoint a = pane->toWidget(from).toPoint(), b = pane->toWidget(to).toPoint();
+    QTest::mousePress(pane, Qt::LeftButton, {}, a);
+    QTest::mouseMove(pane, (a + b) / 2);
+    QTest::mouseMove(pane, b);
+    QTest::mouseRelease(pane, Qt::LeftButton, {}, b);
+    return {pane->toImage(QPointF(a)), pane->toImage(QPointF(b))};
 }
 
 }  // namespace omnitune::testing

@@ -4,12 +4,16 @@
 // turns every automatic mode off (the image must not drift during a match); every write read
 // back, a mismatch shown ("exposure is 410, asked for 400"); and the automatic calibration
 // (calib/camera/CameraAutoCalibration) started, stopped and reverted from here, one iteration
-// per event-loop turn, its progress in the status line. The camera is driven on the GUI
-// thread: each calibration iteration waits for a few frames (~0.1 s on a 30 frames/s camera).
+// per event-loop turn, its progress in the status line and its convergence in plots
+// (CalibrationPlot). showFrame() keeps a live intensity histogram with its mean sample value
+// (MSV) and the reference regions' chroma and black level, at most a few times a second. The
+// camera is driven on the GUI thread: each calibration iteration waits for a few frames
+// (~0.1 s on a 30 frames/s camera).
 #include "calib/camera/Camera.h"
 #include "calib/camera/CameraAutoCalibration.h"
 #include "core/CameraAutoOptions.h"
 
+#include <QElapsedTimer>
 #include <QTimer>
 #include <QWidget>
 
@@ -24,16 +28,25 @@ class QSpinBox;
 
 namespace omnitune {
 
+class CalibrationPlot;
+class IntensityHistogramView;
+
 class CameraPanel : public QWidget {
     Q_OBJECT
 
 public:
+    // Live frames refresh the histogram at most this often (ms): it costs a few ms per frame.
+    static constexpr int kHistogramIntervalMs = 200;
+
     explicit CameraPanel(QWidget* parent = nullptr);
     ~CameraPanel() override;
 
     // `camera` must be open and outlive the panel, or be replaced (nullptr: none) before it
     // goes. `usedMask`: the pixels the calibration's MSV counts (empty: the whole frame).
     void setCamera(Camera* camera, const CameraAutoOptions& options = {}, const cv::Mat& usedMask = {});
+    // The config changed (reference regions dragged, targets edited, a new mask): the next
+    // calibration and the histogram use these; a running calibration keeps its own.
+    void setOptions(const CameraAutoOptions& options, const cv::Mat& usedMask);
 
     // Reads every feature back into the controls.
     void refresh();
@@ -47,6 +60,20 @@ public:
     QPushButton* stopButton() const { return stop_; }
     QPushButton* revertButton() const { return revert_; }
     QString statusText() const;
+    // Beside the feature's row: what the camera holds when it differs from what was asked.
+    QString mismatchText(CameraFeatureId id) const;
+    // "All auto modes off" or which are on.
+    QString autoStateText() const;
+    IntensityHistogramView* histogramView() const { return histogram_; }
+    QString msvText() const;
+    CalibrationPlot* plot() const { return plot_; }
+    // Live frames come at most every `ms` (tests: 0, every frame).
+    void setHistogramInterval(int ms) { histogramIntervalMs_ = ms; }
+
+public slots:
+    // A live frame (BGR, 8 bits): the histogram, MSV and reference-region values, when the
+    // panel is visible and the last update is older than the interval; cheap otherwise.
+    void showFrame(const cv::Mat& bgr);
 
 signals:
     // After each calibration iteration, for plots.
@@ -59,6 +86,7 @@ private:
         QSlider* slider = nullptr;
         QSpinBox* spin = nullptr;
         QCheckBox* automatic = nullptr;
+        QLabel* mismatch = nullptr;
     };
     void rebuild();
     void write(CameraFeatureId id, int value);
@@ -70,6 +98,7 @@ private:
     void revertCalibration();
     void setStatus(const QString& text, bool problem);
     void updateButtons();
+    void updateAutoState();
 
     Camera* camera_ = nullptr;
     CameraAutoOptions options_;
@@ -81,6 +110,12 @@ private:
     QPushButton* stop_ = nullptr;
     QPushButton* revert_ = nullptr;
     QLabel* status_ = nullptr;
+    QLabel* autoState_ = nullptr;
+    IntensityHistogramView* histogram_ = nullptr;
+    QLabel* msv_ = nullptr;
+    CalibrationPlot* plot_ = nullptr;
+    QElapsedTimer histogramClock_;
+    int histogramIntervalMs_ = kHistogramIntervalMs;
     QTimer stepTimer_;
     std::unique_ptr<CameraAutoCalibration> calibration_;
     bool refreshing_ = false;  // controls being set from the camera: no writes back

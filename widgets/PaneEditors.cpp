@@ -6,6 +6,7 @@
 #include "widgets/MaskImportDialog.h"
 #include "widgets/PipelineRunner.h"
 #include "widgets/RadialSensorEditor.h"
+#include "widgets/ReferenceRegionEditor.h"
 #include "widgets/TruthMarker.h"
 
 #include <QAction>
@@ -17,8 +18,10 @@ PaneEditors::PaneEditors(ConfigDocument* doc, PipelineView* view, GeometryEditor
                          RayStrip* strip, QWidget* parent)
     : QObject(parent), doc_(doc), parent_(parent), geometry_(geometry), marker_(marker),
       mask_(new MaskEditor(doc, view, this)), sensors_(new RadialSensorEditor(doc, view, strip, this)),
-      distances_(new DistancePointsPanel(doc, view, parent))
+      distances_(new DistancePointsPanel(doc, view, parent)), references_(new ReferenceRegionEditor(doc, view, this))
 {
+    connect(references_, &ReferenceRegionEditor::message, this, &PaneEditors::message);
+    connect(references_, &ReferenceRegionEditor::editingChanged, this, [this](bool on) { exclusive(references_, on); });
     connect(distances_, &DistancePointsPanel::message, this, &PaneEditors::message);
     connect(distances_, &DistancePointsPanel::addingChanged, this, [this](bool on) { exclusive(distances_, on); });
     connect(mask_, &MaskEditor::message, this, &PaneEditors::message);
@@ -35,6 +38,7 @@ void PaneEditors::exclusive(const QObject* from, bool on)
     if (from != mask_) mask_->setEditing(false);
     if (from != sensors_) sensors_->setEditing(false);
     if (from != distances_) distances_->setAdding(false);
+    if (from != references_) references_->setEditing(false);
     if (from != geometry_) geometry_->setEditing(false);
     if (from != marker_ && marker_->isMarking()) marker_->setMarking(false);
     emit leftButtonTaken();
@@ -45,6 +49,7 @@ void PaneEditors::releaseLeftButton()
     mask_->setEditing(false);
     sensors_->setEditing(false);
     distances_->setAdding(false);
+    references_->setEditing(false);
 }
 
 void PaneEditors::fillMenu(QMenu* camera)
@@ -57,6 +62,7 @@ void PaneEditors::fillMenu(QMenu* camera)
     import->setStatusTip(tr("Use a mask image made elsewhere, after a preview; choose which side means process"));
     camera->addSeparator();
     sensors_->fillMenu(camera);
+    references_->fillMenu(camera);
 }
 
 void PaneEditors::setRun(std::shared_ptr<const PipelineRun> run)
@@ -70,6 +76,7 @@ void PaneEditors::stopEditing()
     mask_->setEditing(false);
     sensors_->setEditing(false);
     distances_->setAdding(false);
+    references_->setEditing(false);
     run_.reset();
     sensors_->setRun(nullptr);
 }
@@ -82,6 +89,7 @@ void PaneEditors::escape()
     }
     sensors_->setEditing(false);
     distances_->setAdding(false);
+    references_->setEditing(false);
 }
 
 }  // namespace omnitune

@@ -1,7 +1,8 @@
 #pragma once
 // The window's editors that paint or drag on the panes beyond the geometry (issue 11): the
-// mask editor, mask import, the radial sensor editor with its ray strip and the distance-map
-// points (a panel the window docks), wired so that one
+// mask editor, mask import, the radial sensor editor with its ray strip, the distance-map
+// points (a panel the window docks) and the camera calibration's reference regions (issue 12),
+// wired so that one
 // of them, the geometry editor or truth marking holds the left button at a time. Keeps that
 // wiring out of the main window, which only places the tool bar and the strip.
 #include <QObject>
@@ -20,6 +21,7 @@ class MaskEditor;
 class PipelineView;
 class RadialSensorEditor;
 class RayStrip;
+class ReferenceRegionEditor;
 class TruthMarker;
 struct PipelineRun;
 
@@ -32,7 +34,9 @@ public:
     MaskEditor* mask() const { return mask_; }
     RadialSensorEditor* sensors() const { return sensors_; }
     DistancePointsPanel* distances() const { return distances_; }
-    // Camera menu: Edit mask (M), the mask tools, Import mask..., Edit radial sensors (R).
+    ReferenceRegionEditor* referenceRegions() const { return references_; }
+    // Camera menu: Edit mask (M), the mask tools, Import mask..., Edit radial sensors (R),
+    // Edit reference regions (K).
     void fillMenu(QMenu* camera);
     // The run on screen: the ray strip's classes and the import preview's frame.
     void setRun(std::shared_ptr<const PipelineRun> run);
@@ -40,7 +44,7 @@ public:
     void stopEditing();
     // Escape: an open polygon is dropped, then the editing ends.
     void escape();
-    // Mask, sensor and distance editing off, because another holder (colour sampling) takes
+    // Mask, sensor, distance and reference-region editing off, because another holder (colour sampling) takes
     // the left button.
     void releaseLeftButton();
 
@@ -61,6 +65,7 @@ private:
     MaskEditor* mask_;
     RadialSensorEditor* sensors_;
     DistancePointsPanel* distances_;
+    ReferenceRegionEditor* references_;
     std::shared_ptr<const PipelineRun> run_;
 };
 

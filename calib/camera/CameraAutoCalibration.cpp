@@ -47,7 +47,8 @@ std::optional<std::string> measureCameraFrame(const cv::Mat& bgr, const cv::Mat&
                " frames but the camera gives " + size;
     cv::Mat grey;
     cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
-    out.msv = meanSampleValue(regionHistogram(grey, usedMask, o.histogramRegions));
+    out.histogram = regionHistogram(grey, usedMask, o.histogramRegions);
+    out.msv = meanSampleValue(out.histogram);
     cv::Mat ycrcb;
     cv::cvtColor(bgr(whiteRegion(o)), ycrcb, cv::COLOR_BGR2YCrCb);
     const cv::Scalar white = cv::mean(ycrcb);

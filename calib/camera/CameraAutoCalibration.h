@@ -22,6 +22,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace omnitune {
 
@@ -31,6 +32,7 @@ struct CameraMeasurement {
     double v = 0.0;      // white region's mean Cr
     double black = 0.0;  // black region's mean grey level
     cv::Vec3d white;     // white region's mean B, G, R: a clipped channel makes U and V meaningless
+    std::vector<double> histogram;  // pixels per intensity region (the MSV's), for the camera panel
 };
 
 // Measures a BGR frame. `usedMask` (empty: every pixel) selects the MSV's pixels. Returns a
