@@ -70,6 +70,14 @@ private slots:
         QCOMPARE(seq->step(), SetupSequence::CentreRim);
         QVERIFY(!seq->backButton()->isEnabled());
 
+        // OMNITUNE_SCREENSHOT_DIR set: the window at a few steps, for docs/user-guide.md.
+        const auto shoot = [&](const QString& name) {
+            if (!qEnvironmentVariableIsSet("OMNITUNE_SCREENSHOT_DIR")) return;
+            QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);  // the strip just shown, laid out
+            if (waitForFrame(window, window.lastRun()->frameIndex))
+                window.grab().save(qEnvironmentVariable("OMNITUNE_SCREENSHOT_DIR") + "/" + name + ".png");
+        };
+        shoot("setup-1-start");
         const auto applyStep = [&](SetupSequence::Step step) {
             QCOMPARE(seq->step(), step);
             const int before = undo->count();
@@ -99,6 +107,7 @@ private slots:
         const int beforeMask = undo->count();
         QTest::mouseClick(seq->applyButton(), Qt::LeftButton);
         QCOMPARE(undo->count(), beforeMask + 1);
+        shoot("setup-3-mask");
         QVERIFY2(!doc->config().mask.empty(), qPrintable(seq->text()));
         QVERIFY(window.paneEditors()->mask()->isEditing());  // correct it with the brush
         QTest::mouseClick(seq->nextButton(), Qt::LeftButton);
@@ -113,6 +122,9 @@ private slots:
         QVERIFY(window.ballModel()->lastFit());
         QCOMPARE(window.ballModel()->plot()->plotData().residuals.size(), std::size_t(24));
         QVERIFY(window.ballModel()->plot()->plotData().summary.contains("RMS"));
+        QTest::mouseClick(seq->backButton(), Qt::LeftButton);  // the ball-model step with its plot, for the picture
+        shoot("setup-4-ball-model");
+        QTest::mouseClick(seq->nextButton(), Qt::LeftButton);
         QVERIFY(doc->config().ball.c0 != original.ball.c0 || doc->config().ball.c1 != original.ball.c1);
 
         // Distance map: the panel is shown; without points the step says so and changes nothing.

@@ -3,6 +3,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QVBoxLayout>
 
 namespace omnitune {
 
@@ -62,12 +63,20 @@ SetupSequence::SetupSequence(QWidget* parent)
     title_->setObjectName(QStringLiteral("setupStepTitle"));
     body_->setWordWrap(true);
     body_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // Room for two lines from the start: a wrapped label's height follows its width only later.
+    body_->setMinimumHeight(2 * body_->fontMetrics().lineSpacing() + 2);
     apply_->setObjectName(QStringLiteral("setupApply"));
     next_->setDefault(false);
-    auto* row = new QHBoxLayout(this);
-    row->setContentsMargins(6, 3, 6, 3);
+    // Title and buttons on one row, the explanation under them: a wrapped label beside
+    // buttons gets squeezed to a sliver when the strip first shows.
+    auto* column = new QVBoxLayout(this);
+    column->setContentsMargins(6, 3, 6, 3);
+    column->setSpacing(2);
+    auto* row = new QHBoxLayout;
+    column->addLayout(row);
+    column->addWidget(body_);
     row->addWidget(title_);
-    row->addWidget(body_, 1);
+    row->addStretch(1);
     for (QPushButton* b : {apply_, back_, skip_, next_, close_}) {
         b->setFocusPolicy(Qt::NoFocus);  // the arrow keys stay with the panes (nudging the centre)
         row->addWidget(b);
@@ -142,6 +151,7 @@ void SetupSequence::refresh()
     if (!outcomes_[step_].isEmpty()) body += "<br><i>" + outcomes_[step_].toHtmlEscaped() + "</i>";
     body_->setText(body);
     apply_->setText(tr(t.action));
+    apply_->setMinimumWidth(apply_->sizeHint().width());  // the whole action name, never clipped
     apply_->setEnabled(bool(actions_[step_].apply));
     back_->setEnabled(step_ > 0);
     next_->setText(step_ + 1 == StepCount ? tr("Finish") : tr("Next >"));
