@@ -2,6 +2,7 @@
 // read back pixel for pixel, with the config and an empty truth.csv; a cancel keeps a closed
 // session of the frames written so far; a folder that is not empty is refused with the path
 // named; a corrupt frame is left out and named, a config of another size is not written.
+#include "CancelAfter.h"
 #include "calib/session/SessionExport.h"
 #include "calib/session/SessionReader.h"
 #include "calib/source/FrameSourceFactory.h"
@@ -16,6 +17,7 @@
 #include <fstream>
 
 using namespace omnitune;
+using omnitune::testing::CancelAfter;
 
 namespace {
 
@@ -36,17 +38,6 @@ std::string writeImageFolder(const QTemporaryDir& tmp, int count, cv::Size size)
     return dir;
 }
 
-// Cancels after `after` frames.
-class CancelAfter : public Progress {
-public:
-    explicit CancelAfter(int after) : after_(after) {}
-    void update(double) override { ++seen_; }
-    bool isCancelRequested() const override { return seen_ >= after_; }
-
-private:
-    int after_;
-    int seen_ = 0;
-};
 
 }  // namespace
 
