@@ -1,5 +1,6 @@
 #include "app/MainWindow.h"
 
+#include "widgets/BallModelPanel.h"
 #include "widgets/CameraSetup.h"
 #include "widgets/CameraSetupBar.h"
 #include "widgets/CandidateTableModel.h"
@@ -23,9 +24,12 @@
 #include "widgets/ScreenFit.h"
 #include "widgets/RecoveryFile.h"
 #include "widgets/RecoveryOffer.h"
+#include "widgets/SaveAsSession.h"
 #include "calib/session/Session.h"
 #include "calib/source/SessionSource.h"
 #include "widgets/SessionSweepPanel.h"
+#include "widgets/SetupSequence.h"
+#include "widgets/SetupSteps.h"
 #include "widgets/ThresholdPanel.h"
 #include "widgets/TruthMarker.h"
 
@@ -140,6 +144,7 @@ MainWindow::MainWindow(QWidget* parent)
             statusBar()->showMessage(tr("Last frame marked; U finds the frames still unmarked"), 8000);
     });
     connect(marker_, &TruthMarker::frameRequested, nav_, &FrameNavigator::goTo);
+    connect(marker_, &TruthMarker::markingRefused, this, &MainWindow::offerSessionForTruth, Qt::QueuedConnection);
     connect(marker_, &TruthMarker::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     connect(marker_, &TruthMarker::described, this, [this](const QString& text) {
         truthLabel_->setText(text);
@@ -199,6 +204,13 @@ void MainWindow::buildMenus()
     file->addSeparator();
     file->addAction(tr("&Save config"), this, &MainWindow::saveConfig, QKeySequence::Save);
     file->addAction(tr("Save config &as..."), this, &MainWindow::saveConfigAs, QKeySequence::SaveAs);
+    // An image folder or video becomes a session folder, so it can be marked and evaluated.
+    saveAsSession_ = new SaveAsSession(this);
+    connect(saveAsSession_, &SaveAsSession::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    saveAsSessionAction_ = file->addAction(tr("Save as sessio&n..."), this, &MainWindow::saveAsSession);
+    saveAsSessionAction_->setObjectName("saveAsSession");
+    saveAsSessionAction_->setStatusTip(tr("Copy the open image folder or video into a session folder (frames, config, truth.csv) and open it"));
+    saveAsSessionAction_->setEnabled(false);  // until a source is open
     file->addAction(tr("&Revert to saved"), this, [this] {
         if (const auto err = doc_.revert()) QMessageBox::warning(this, tr("Revert"), *err);
     });
@@ -294,19 +306,19 @@ void MainWindow::buildMenus()
         if (on) paneEditors_->releaseLeftButton();
     });
     paneEditors_->distances()->hide();
-    // A tab beside the thresholds from the first use on (docked earlier, its size would squeeze them).
-    camera->addAction(tr("&Distance map points and fit..."), this, [this] {
-        auto* dock = findChild<QDockWidget*>("distanceMap");
-        if (!dock) {
-            dock = new QDockWidget(tr("Distance map"), this);
-            dock->setObjectName("distanceMap");
-            dock->setWidget(paneEditors_->distances());
-            addDockWidget(Qt::RightDockWidgetArea, dock);
-            if (auto* thresholds = findChild<QDockWidget*>("thresholds")) tabifyDockWidget(thresholds, dock);
-        }
-        dock->show();
-        dock->raise();
-    })->setObjectName("distanceMapPoints");
+    camera->addAction(tr("&Distance map points and fit..."), this, [this] { showPanel(paneEditors_->distances()); })
+        ->setObjectName("distanceMapPoints");
+    ballModel_ = new BallModelPanel(&doc_, &truth_, this);
+    ballModel_->hide();
+    connect(ballModel_, &BallModelPanel::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    camera->addAction(tr("&Ball model samples and fit..."), this, [this] { showPanel(ballModel_); })->setObjectName("ballModelPanel");
+    // The guided set-up: a strip above the panes (under the yellow bar).
+    setupSequence_ = new SetupSequence(this);
+    qobject_cast<QBoxLayout*>(centralWidget()->layout())->insertWidget(2, setupSequence_);
+    connect(cameraSetup_, &CameraSetup::sequenceRequested, setupSequence_, &SetupSequence::start);
+    connectSetupSteps(*setupSequence_, {&doc_, cameraSetup_, geometryEditor_, paneEditors_->mask(), ballModel_,
+                                        paneEditors_->distances(), colours_, [this](QWidget* w) { showPanel(w); },
+                                        [this] { return saveConfig(); }});
     camera->addSeparator();
     setUpCameraAction_ = camera->addAction(tr("&Set up this camera (centre, rim, body, mask)"), cameraSetup_, &CameraSetup::setUp);
     setUpCameraAction_->setObjectName("setUpCamera");
@@ -350,8 +362,10 @@ bool MainWindow::openSource(const QString& path)
     source_ = std::move(opened.source);
     sourcePath_ = path;  // Apply to whole session re-opens it in a thread of its own
     applyToSessionAction_->setEnabled(true);
+    saveAsSessionAction_->setEnabled(true);
     setUpCameraAction_->setEnabled(true);
     cameraSetup_->setSource(path);
+    ballModel_->setDetections({});  // detections of the previous source
     if (sweepPanel_) sweepPanel_->reset();  // its results belong to the previous source
     nav_->setFrameCount(source_->frameCount());
     nav_->setFrameRate(doc_.config().camera.frameRate);
@@ -511,6 +525,40 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
     emit runShown(run->frameIndex);
 }
 
+void MainWindow::showPanel(QWidget* panel)
+{
+    // A tab beside the thresholds from the first use on (docked earlier, its size would squeeze them).
+    auto* dock = qobject_cast<QDockWidget*>(panel->parentWidget());
+    if (!dock) {
+        const QString title = panel == ballModel_ ? tr("Ball model") : tr("Distance map");
+        dock = new QDockWidget(title, this);
+        dock->setObjectName(panel == ballModel_ ? "ballModel" : "distanceMap");
+        dock->setWidget(panel);
+        addDockWidget(Qt::RightDockWidgetArea, dock);
+        if (auto* thresholds = findChild<QDockWidget*>("thresholds")) tabifyDockWidget(thresholds, dock);
+    }
+    dock->show();
+    dock->raise();
+}
+
+bool MainWindow::saveAsSession()
+{
+    const QString folder = saveAsSession_->save(sourcePath_, doc_.config());
+    return !folder.isEmpty() && openSource(folder);
+}
+
+void MainWindow::offerSessionForTruth()
+{
+    if (!source_ || dynamic_cast<const SessionSource*>(source_.get())) return;  // a session's own reason stands
+    if (QMessageBox::question(this, tr("Mark ground truth"),
+                              tr("Ground truth is kept in a session folder's truth.csv, and %1 is not a session.\n\n"
+                                 "Save it as a session (its frames and this config in a new folder), open that and mark there?")
+                                  .arg(sourceName_))
+            == QMessageBox::Yes
+        && saveAsSession())
+        marker_->setMarking(true);
+}
+
 bool MainWindow::saveConfig() { return configFiles_->save(); }
 
 bool MainWindow::saveConfigAs() { return configFiles_->saveAs(); }
@@ -603,6 +651,7 @@ void MainWindow::onSessionSweepFinished(std::shared_ptr<const SweepResult> resul
         notices_->add(tr("Apply to whole session failed:"), {QString::fromStdString(result->error)});
         return;
     }
+    ballModel_->setDetections(result->current);  // more samples for the ball model
     QVector<FrameMark> marks = sweepMarks(*result);
     if (result->cancelled) {  // frames the sweep never reached keep what the live pipeline marked
         QSet<int> visited;

@@ -16,6 +16,7 @@ class QLabel;
 
 namespace omnitune {
 
+class BallModelPanel;
 class CameraSetup;
 class CandidateTableModel;
 class ColourEditor;
@@ -26,9 +27,11 @@ class PaneEditors;
 class NoticeBar;
 class PipelineView;
 class SessionSweepPanel;
+class SetupSequence;
 struct SweepResult;
 class ThresholdPanel;
 class RayStrip;
+class SaveAsSession;
 class RecentFiles;
 class RecoveryFile;
 class TruthMarker;
@@ -55,6 +58,8 @@ public:
     ThresholdPanel* thresholdPanel() const { return panel_; }
     RecoveryFile* recovery() const { return recovery_; }
     CameraSetup* cameraSetup() const { return cameraSetup_; }
+    SetupSequence* setupSequence() const { return setupSequence_; }
+    BallModelPanel* ballModel() const { return ballModel_; }
     GeometryEditor* geometryEditor() const { return geometryEditor_; }
     PaneEditors* paneEditors() const { return paneEditors_; }
     ColourEditor* colourEditor() const { return colours_; }
@@ -66,6 +71,8 @@ public slots:
     void showFrame(int index);
     bool saveConfig();
     bool saveConfigAs();
+    // File > Save as session...: the open image folder or video as a session folder, then opens it.
+    bool saveAsSession();
     // Session > Apply to whole session (Ctrl+R): the current and the saved config over every
     // frame in the background (SessionSweepPanel, docked); the slider then marks what changed.
     void applyToSession();
@@ -90,6 +97,8 @@ private:
     void openTruth(const QString& sessionFolder, cv::Size frameSize);  // frameSize: bounds the truth rows
     void chooseSourceFile();
     void offerRecoveredEdits();  // edits an earlier run left unsaved for the current config
+    void showPanel(QWidget* panel);  // the distance map or ball model panel, docked on first use
+    void offerSessionForTruth();  // marking was refused: a non-session source may become one
 
     ConfigDocument doc_;
     TruthDocument truth_;
@@ -105,6 +114,8 @@ private:
     RecoveryFile* recovery_ = nullptr;  // keeps unsaved config edits through a crash
     CameraSetup* cameraSetup_ = nullptr;  // a camera the config does not fit yet
     QAction* setUpCameraAction_ = nullptr;
+    SetupSequence* setupSequence_ = nullptr;  // the guided set-up strip
+    BallModelPanel* ballModel_ = nullptr;     // samples, fit and residuals of r(d) (docked on first use)
     GeometryEditor* geometryEditor_ = nullptr;  // drag centre and radii, nudge the centre
     PaneEditors* paneEditors_ = nullptr;  // the mask and the radial sensors on the panes
     RayStrip* rayStrip_ = nullptr;        // the classes along the selected sensor ray
@@ -127,6 +138,8 @@ private:
     void onSessionSweepFinished(std::shared_ptr<const SweepResult> result);
     QString sourcePath_;
     QAction* applyToSessionAction_ = nullptr;
+    SaveAsSession* saveAsSession_ = nullptr;
+    QAction* saveAsSessionAction_ = nullptr;
     SessionSweepPanel* sweepPanel_ = nullptr;
 };
 

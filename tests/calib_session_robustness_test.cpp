@@ -2,6 +2,7 @@
 // session.yml naming a config outside its folder, a recording killed right after session.yml
 // was rewritten, stray frame files numbered far past the others, and a simulated tour whose
 // recording is cancelled. Each case names the defect it guards.
+#include "CancelAfter.h"
 #include "calib/session/Session.h"
 #include "calib/session/SessionConfig.h"
 #include "calib/session/SessionReader.h"
@@ -22,6 +23,7 @@
 #include <sstream>
 
 using namespace omnitune;
+using omnitune::testing::CancelAfter;
 namespace fs = std::filesystem;
 using namespace filetest;
 
@@ -102,17 +104,6 @@ void setInfoKey(const std::string& folder, const std::string& key, const std::st
     writeFile(path, out);
 }
 
-// Cancels once `after` updates were seen.
-class CancelAfter : public Progress {
-public:
-    explicit CancelAfter(int after) : after_(after) {}
-    void update(double) override { ++seen_; }
-    bool isCancelRequested() const override { return seen_ >= after_; }
-
-private:
-    int after_;
-    int seen_ = 0;
-};
 
 }  // namespace
 

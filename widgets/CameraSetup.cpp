@@ -1,6 +1,7 @@
 #include "widgets/CameraSetup.h"
 
 #include "calib/config/ProvisionalGeometry.h"
+#include "calib/fit/BodyFit.h"
 #include "calib/fit/FitFrames.h"
 #include "calib/fit/MirrorFit.h"
 #include "calib/mask/AutoMask.h"
@@ -13,6 +14,8 @@
 
 #include <QApplication>
 #include <QFileInfo>
+
+#include <algorithm>
 
 namespace omnitune {
 
@@ -46,6 +49,8 @@ CameraSetup::CameraSetup(ConfigDocument* doc, const ConfigFiles* files, NoticeBa
 void CameraSetup::setSource(const QString& path)
 {
     sourcePath_ = path;
+    frames_.clear();
+    rimRadius_ = 0.0;
     frameSize_ = {};
     offered_ = false;
     bar_->hide();
@@ -87,58 +92,84 @@ void CameraSetup::adapt()
 void CameraSetup::setUp()
 {
     if (sourcePath_.isEmpty()) return;
-    BusyCursor busy;
+    bar_->hide();  // the sequence's strip takes over
+    emit sequenceRequested();
+}
+
+const std::vector<cv::Mat>& CameraSetup::frames(QString* why)
+{
+    if (!frames_.empty()) return frames_;
     auto opened = openFrameSource(sourcePath_.toStdString());
     if (!opened.ok()) {
-        report(tr("Cannot read %1: %2").arg(sourcePath_, QString::fromStdString(opened.error)), false);
-        return;
+        *why = tr("Cannot read %1: %2").arg(sourcePath_, QString::fromStdString(opened.error));
+        return frames_;
     }
     // Read once: the rim averages them, the body and the mask need the field to move between them.
-    FitFrames frames = readFitFrames(*opened.source, frameCount);
-    if (!frames.ok()) {
-        report(tr("No frames for the fit: %1").arg(QString::fromStdString(frames.error->toString())), false);
-        return;
-    }
-    const MirrorFitResult mirror = fitMirror(frames.images, doc_->config());
-    if (!mirror.ok()) {
-        report(tr("The mirror rim was not found: %1").arg(QString::fromStdString(mirror.error->toString())), false);
-        return;
-    }
-    if (const auto why = doc_->replaceConfig(mirror.config, tr("Set up: mirror centre, rim and robot body"))) {
-        report(tr("The fitted geometry was refused: %1").arg(*why), false);
-        return;
-    }
+    FitFrames read = readFitFrames(*opened.source, frameCount);
+    if (!read.ok())
+        *why = tr("No frames for the fit: %1").arg(QString::fromStdString(read.error->toString()));
+    else
+        frames_ = std::move(read.images);
+    return frames_;
+}
+
+SetupStepOutcome CameraSetup::fitCentreAndRim()
+{
+    BusyCursor busy;
+    QString why;
+    const auto& images = frames(&why);
+    if (images.empty()) return {false, why};
+    const MirrorFitResult mirror = fitMirror(images, doc_->config(), {}, false);
+    if (!mirror.ok())
+        return {false, tr("The mirror rim was not found: %1").arg(QString::fromStdString(mirror.error->toString()))};
+    if (const auto refused = doc_->replaceConfig(mirror.config, tr("Set up: mirror centre and rim")))
+        return {false, tr("The fitted geometry was refused: %1").arg(*refused)};
+    rimRadius_ = mirror.rim.rimRadius;
     const RimFit& r = mirror.rim;
-    const GeometryOptions& g = mirror.config.geometry;
     QStringList lines = toLines(mirror.adapted);
     lines << tr("centre (%1, %2) px, mirror rim %3 px (residual RMS %4 px over %5 deg), outer radius %6 px")
                  .arg(r.centre.x, 0, 'f', 1).arg(r.centre.y, 0, 'f', 1).arg(r.rimRadius, 0, 'f', 1)
-                 .arg(r.rmsPx, 0, 'f', 2).arg(r.coverageDeg, 0, 'f', 0).arg(g.outerRadius, 0, 'f', 1);
-    lines << tr("robot body: inner radius %1 px").arg(g.innerRadius, 0, 'f', 1);
+                 .arg(r.rmsPx, 0, 'f', 2).arg(r.coverageDeg, 0, 'f', 0).arg(mirror.config.geometry.outerRadius, 0, 'f', 1);
+    notices_->add(tr("Centre and rim from %1 frame(s) (Ctrl+Z undoes):").arg(images.size()), lines);
+    return {true, lines.back()};
+}
 
-    const AutoMaskResult mask = autoMask(frames.images, g, ColorLut(mirror.config.colors));
-    QString maskText;
-    if (mask.ok()) {
-        Config withMask = doc_->config();
-        withMask.mask = mask.fit.mask;
-        if (withMask.geometry.maskFile.empty()) withMask.geometry.maskFile = "mask.png";
-        if (const auto why = doc_->replaceConfig(withMask, tr("Set up: robot mask")))
-            maskText = tr("mask refused: %1").arg(*why);
-        else
-            maskText = tr("mask: %1 region(s) that stay put while the field moves, %2 % of the mirror image (saved as "
-                          "%3 beside the config)")
-                           .arg(mask.fit.regions).arg(100.0 * mask.fit.robotShare, 0, 'f', 1)
-                           .arg(QString::fromStdString(withMask.geometry.maskFile));
-    } else {
-        maskText = tr("no mask proposed: %1").arg(QString::fromStdString(mask.error->toString()));
-    }
-    lines << maskText;
-    notices_->add(tr("Camera set up from %1 frame(s) (each step is one Ctrl+Z):").arg(frames.images.size()), lines);
-    report(tr("Camera set up: centre, rim, robot body%1. Next: mark balls (Truth > Mark ground truth) and fit the ball "
-              "model, measure the distance map (omnitune-calibrate ball-model / distance-map, docs/calibration.md), then "
-              "save (Ctrl+S).")
-               .arg(mask.ok() ? tr(" and mask") : QString()),
-           true);
+SetupStepOutcome CameraSetup::fitRobotBody()
+{
+    BusyCursor busy;
+    QString why;
+    const auto& images = frames(&why);
+    if (images.empty()) return {false, why};
+    Config next = doc_->config();
+    GeometryOptions& g = next.geometry;
+    const double rim = rimRadius_ > 0 ? rimRadius_ : g.outerRadius;
+    const BodyFitResult body = fitBody(images, {g.centerX, g.centerY}, rim);
+    if (!body.ok())
+        return {false, tr("The robot body was not found: %1").arg(QString::fromStdString(body.error->toString()))};
+    g.innerRadius = std::min(body.fit.innerRadius, 0.9 * g.outerRadius);  // never an empty ring
+    if (const auto refused = doc_->replaceConfig(next, tr("Set up: robot body")))
+        return {false, tr("The inner radius was refused: %1").arg(*refused)};
+    return {true, tr("robot body: inner radius %1 px").arg(g.innerRadius, 0, 'f', 1)};
+}
+
+SetupStepOutcome CameraSetup::proposeMask()
+{
+    BusyCursor busy;
+    QString why;
+    const auto& images = frames(&why);
+    if (images.empty()) return {false, why};
+    const Config& now = doc_->config();
+    const AutoMaskResult mask = autoMask(images, now.geometry, ColorLut(now.colors));
+    if (!mask.ok()) return {false, tr("No mask proposed: %1").arg(QString::fromStdString(mask.error->toString()))};
+    Config withMask = now;
+    withMask.mask = mask.fit.mask;
+    if (withMask.geometry.maskFile.empty()) withMask.geometry.maskFile = "mask.png";
+    if (const auto refused = doc_->replaceConfig(withMask, tr("Set up: robot mask")))
+        return {false, tr("The mask was refused: %1").arg(*refused)};
+    return {true, tr("mask: %1 region(s) that stay put while the field moves, %2 % of the mirror image (saved as "
+                     "%3 beside the config)")
+                      .arg(mask.fit.regions).arg(100.0 * mask.fit.robotShare, 0, 'f', 1)
+                      .arg(QString::fromStdString(withMask.geometry.maskFile))};
 }
 
 void CameraSetup::report(const QString& text, bool ok) { bar_->showMessage(text, false, !ok); }

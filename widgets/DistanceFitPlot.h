@@ -3,15 +3,14 @@
 // distance over image radius on top, the residual of each point (cm) below, with the RMS, so a
 // point typed wrong or a curve that bends stands out.
 #include "calib/fit/DistanceMapFit.h"
-
-#include <QWidget>
+#include "widgets/CurveFitPlot.h"
 
 #include <optional>
 #include <vector>
 
 namespace omnitune {
 
-class DistanceFitPlot : public QWidget {
+class DistanceFitPlot : public CurveFitPlot {
     Q_OBJECT
 public:
     explicit DistanceFitPlot(QWidget* parent = nullptr);
@@ -19,13 +18,8 @@ public:
     // Points alone (no fit yet, or a refused one), or points with their fit.
     void setData(std::vector<DistancePoint> points, std::optional<DistanceMapFit> fit);
     const std::optional<DistanceMapFit>& fit() const { return fit_; }
-    QSize sizeHint() const override { return QSize(320, 240); }
-
-protected:
-    void paintEvent(QPaintEvent* event) override;
 
 private:
-    std::vector<DistancePoint> points_;
     std::optional<DistanceMapFit> fit_;
 };
 

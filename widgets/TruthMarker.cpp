@@ -92,6 +92,7 @@ void TruthMarker::setMarking(bool on)
     if (on && !truth_->isOpen()) {
         refusal_ = truth_->closedReason();
         emit message(refusal_);
+        emit markingRefused();
         on = false;
     }
     const bool was = marking_;

@@ -75,6 +75,7 @@ signals:
     void message(const QString& text);  // a refusal, a mark, an undo or a failed save, for the status bar
     void described(const QString& text);  // describe() changed
     void markingChanged(bool on);
+    void markingRefused();  // marking mode was asked for while no truth is open (after message())
 
 private:
     void onPressed(QPointF p);

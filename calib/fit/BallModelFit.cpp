@@ -19,6 +19,18 @@ std::vector<BallSample> ballSamplesFromTruth(const std::map<int, TruthRow>& trut
     return samples;
 }
 
+std::vector<BallSample> ballSamplesFromDetections(const std::vector<FrameOutcome>& outcomes, cv::Point2d centre,
+                                                  const std::map<int, TruthRow>& truth)
+{
+    std::vector<BallSample> samples;
+    for (const FrameOutcome& o : outcomes) {
+        const BallDetection& d = o.detection;
+        if (o.processed && d.found && d.radiusPx > 0 && !truth.count(o.frame))
+            samples.push_back({std::hypot(d.px - centre.x, d.py - centre.y), d.radiusPx, o.frame});
+    }
+    return samples;
+}
+
 BallModelFitResult fitBallModel(const std::vector<BallSample>& samples, const BallModelFitOptions& options)
 {
     BallModelFitResult result;

@@ -1,8 +1,9 @@
 #pragma once
 // The expected ball radius r(d) = c0 + c1*d + c2*d^2 (core/BallModel.h, thesis Fig. 4.7) from
 // samples of the ball as seen: image distance of its centre from the mirror centre and its
-// radius, both px. The samples come from ground-truth marks (a session's truth.csv) or, later,
-// from accepted detections.
+// radius, both px. The samples come from ground-truth marks (a session's truth.csv) and from
+// accepted detections (a whole-session run).
+#include "calib/eval/Evaluation.h"
 #include "calib/fit/FitError.h"
 #include "calib/session/TruthCsv.h"
 #include "core/BallModel.h"
@@ -47,6 +48,11 @@ struct BallModelFitResult {
 
 // The visible balls of the truth rows, measured from `centre`.
 std::vector<BallSample> ballSamplesFromTruth(const std::map<int, TruthRow>& truth, cv::Point2d centre);
+
+// The balls `outcomes` found, measured from `centre`, leaving out the frames in `truth` (their
+// marks are the better sample of the same ball).
+std::vector<BallSample> ballSamplesFromDetections(const std::vector<FrameOutcome>& outcomes, cv::Point2d centre,
+                                                  const std::map<int, TruthRow>& truth = {});
 
 BallModelFitResult fitBallModel(const std::vector<BallSample>& samples, const BallModelFitOptions& options = {});
 
