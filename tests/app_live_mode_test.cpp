@@ -2,9 +2,10 @@
 // opened through the real Camera > Live source action, the acquired pane updating at camera
 // rate with the status bar saying "live", the Camera dock holding the camera; Space pauses
 // into the replay buffer, Left / Right step through exactly the buffer's frames, Space goes
-// live again; an unplugged camera stops live mode with a notice naming it and a Reconnect
-// button that brings it back; a camera that cannot be opened leaves the source on screen.
+// live again; an unplugged camera stops live mode and its recording (frames kept) with a
+// notice naming it and a Reconnect button that brings it back; a camera that cannot be opened leaves the source on screen.
 #include "calib/camera/SimulatedCamera.h"
+#include "calib/session/SessionReader.h"
 #include "widgets/CameraPanel.h"
 #include "widgets/FrameNavigator.h"
 #include "widgets/LiveController.h"
@@ -14,6 +15,7 @@
 
 #include <QDockWidget>
 #include <QLabel>
+#include <QRegularExpression>
 #include <QToolButton>
 
 using namespace omnitune;
@@ -107,12 +109,25 @@ private slots:
         MainWindow w;
         QVERIFY(showActive(w));
         QVERIFY(openSimulatedCamera(w));
+        QTemporaryDir dir;
+        const QString folder = dir.path() + "/unplugged";
+        QCOMPARE(w.live()->startRecording(folder), QString());
+        QTRY_VERIFY_WITH_TIMEOUT(w.live()->recorder()->status().written >= 3, 20000);
         auto* camera = dynamic_cast<SimulatedCamera*>(w.live()->camera());
         QVERIFY(camera);
         camera->simulateUnplug();
         QTRY_VERIFY_WITH_TIMEOUT(w.notices()->text().contains("The camera stopped"), 20000);
         const QString notice = w.notices()->text();
         QVERIFY2(notice.contains("simulated camera") && notice.contains("unplugged"), qPrintable(notice));
+        // The recording ends with its frames kept and the session closed.
+        QVERIFY(!w.live()->isRecording());
+        const QRegularExpressionMatch m = QRegularExpression("(\\d+) frames written").match(notice);
+        QVERIFY2(m.hasMatch(), qPrintable(notice));
+        SessionOpen recorded = SessionReader::open(folder.toStdString());
+        QVERIFY(recorded.ok());
+        QCOMPARE(recorded.reader->frameCount(), m.captured(1).toInt());
+        QVERIFY(recorded.reader->frameCount() >= 3);
+        QVERIFY(recorded.reader->info().complete.value_or(false));
         QVERIFY(!w.navigator()->isPlaying());
         QCOMPARE(w.live()->statusLabel()->text(), QString("camera stopped"));
         QVERIFY(!w.cameraPanel()->spinBox(CameraFeatureId::Exposure));  // let go of the dead camera
