@@ -1,6 +1,7 @@
 #include "app/MainWindow.h"
 
 #include "widgets/BallModelPanel.h"
+#include "widgets/CameraPanel.h"
 #include "widgets/CameraSetup.h"
 #include "widgets/CameraSetupBar.h"
 #include "widgets/CandidateTableModel.h"
@@ -11,6 +12,7 @@
 #include "widgets/DistancePointsPanel.h"
 #include "widgets/FrameNavigator.h"
 #include "widgets/GeometryEditor.h"
+#include "widgets/LiveController.h"
 #include "calib/source/FrameSourceFactory.h"
 #include "widgets/MarkedSlider.h"
 #include "widgets/MaskEditor.h"
@@ -19,6 +21,7 @@
 #include "widgets/OverlayLegend.h"
 #include "widgets/PipelineView.h"
 #include "widgets/PixelInspector.h"
+#include "widgets/RecordBar.h"
 #include "widgets/RayStrip.h"
 #include "widgets/RecentFiles.h"
 #include "widgets/ScreenFit.h"
@@ -35,6 +38,7 @@
 
 #include <QAction>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -90,6 +94,9 @@ MainWindow::MainWindow(QWidget* parent)
         l->setMinimumHeight(l->fontMetrics().boundingRect(QRect(0, 0, 4000, 4000), Qt::TextWordWrap, "X\nX").height() + 2);
     resultRow->addWidget(truthLabel_, 1);
     layout->addLayout(resultRow);
+    cameraPanel_ = new CameraPanel(this);
+    live_ = new LiveController(&doc_, nav_, &runner_, cameraPanel_, this);
+    layout->addWidget(live_->recordBar());
     layout->addWidget(nav_);
     setCentralWidget(central);
 
@@ -112,6 +119,17 @@ MainWindow::MainWindow(QWidget* parent)
     tabifyDockWidget(panelDock, coloursDock);
     connect(this, &MainWindow::runShown, colours_, [this] { colours_->setRun(lastRun_); });
     connect(colours_, &ColourEditor::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    // The live camera's features and its automatic calibration: a tab, shown when a camera opens.
+    auto* cameraDock = new QDockWidget(tr("Camera"), this);
+    cameraDock->setObjectName("camera");
+    cameraDock->setWidget(cameraPanel_);
+    addDockWidget(Qt::RightDockWidgetArea, cameraDock);
+    tabifyDockWidget(panelDock, cameraDock);
+    cameraDock->hide();
+    connect(live_, &LiveController::cameraOpened, cameraDock, [cameraDock] {
+        cameraDock->show();
+        cameraDock->raise();
+    });
     panelDock->raise();
 
     auto* table = new CandidateTableView(candidates_, this);
@@ -119,11 +137,20 @@ MainWindow::MainWindow(QWidget* parent)
     connect(table, &CandidateTableView::candidateClicked, view_->transform(), &ViewTransform::centerOn);
 
     statusBar()->addWidget(pixelLabel_, 1);
+    statusBar()->addPermanentWidget(live_->statusLabel());
     statusBar()->addPermanentWidget(timingLabel_);
     timingLabel_->setToolTip(tr("Time per stage of this frame, ms: segmentation, binary image, Canny edges, Hough, "
                                 "validation; total and the running average over about 100 frames"));
 
-    connect(nav_, &FrameNavigator::frameRequested, this, &MainWindow::showFrame);
+    connect(nav_, &FrameNavigator::frameRequested, this, [this](int index) {
+        if (!live_->handleNavigation(index)) showFrame(index);  // live: a tick or a step in the replay buffer
+    });
+    connect(live_, &LiveController::frameWanted, this, &MainWindow::showFrame);
+    connect(live_, &LiveController::sourceChosen, this, &MainWindow::openCamera);
+    connect(live_, &LiveController::notice, this, [this](const QString& title, const QStringList& lines, QAction* button) {
+        notices_->add(title, lines);
+        if (button) notices_->addButton(button);
+    });
     connect(&runner_, &PipelineRunner::finished, this, &MainWindow::onRunFinished);
     connect(&doc_, &ConfigDocument::changed, this, [this] {
         ++generation_;  // "repeat frame": every change re-runs the frame on screen
@@ -185,6 +212,7 @@ MainWindow::~MainWindow()
 {
     // The documents outlive the widgets and labels declared after them; a dirty undo stack
     // still signals "clean" while it is destroyed. Nothing may reach the half-destroyed window.
+    live_->close();  // ends a recording and lets the panel go of the camera while both exist
     delete recovery_;  // listens to the undo stack, which signals while it is destroyed
     recovery_ = nullptr;
     doc_.disconnect();
@@ -274,6 +302,8 @@ void MainWindow::buildMenus()
     }
 
     QMenu* camera = menuBar()->addMenu(tr("&Camera"));
+    live_->fillMenu(camera);
+    camera->addSeparator();
     geometryEditor_ = new GeometryEditor(&doc_, view_, this);
     geometryEditor_->fillMenu(camera);
     connect(geometryEditor_, &GeometryEditor::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
@@ -377,8 +407,34 @@ bool MainWindow::openSource(const QString& path)
     return true;
 }
 
+bool MainWindow::openCamera(const QString& source, SimulatedStart start)
+{
+    CameraOpen opened = LiveController::openCamera(source, start, doc_.config());
+    if (!opened.ok()) {
+        notices_->add(tr("Cannot open the camera (the source on screen stays):"), {QString::fromStdString(opened.error->message)});
+        return false;
+    }
+    const QString name = QString::fromStdString(opened.camera->description());
+    if (!maybeKeepTruth()) return false;
+    if (!configFiles_->maybeSave(tr("The config has unsaved changes. Save them before opening %1?").arg(name), true)) return false;
+    sourceName_ = name;
+    clearForNewSource();
+    configFiles_->keepFor(sourceName_, QDir::current().filePath(QStringLiteral("camera")), QString());
+    // A simulated camera started badly set keeps its bad start (to try the calibration on).
+    source_ = live_->start(std::move(opened.camera), start == SimulatedStart::Good);
+    sourcePath_.clear();  // nothing to re-open: no whole-session sweep, no camera set-up from files
+    applyToSessionAction_->setEnabled(false);
+    setUpCameraAction_->setEnabled(false);
+    if (sweepPanel_) sweepPanel_->reset();
+    marker_->reset(0);
+    openTruth(QString(), cv::Size());
+    updateTitle();
+    return true;
+}
+
 void MainWindow::clearForNewSource()
 {
+    live_->close();  // a camera open before goes (its recording ends, frames kept)
     // Nothing of the previous source may stay on screen under the new title: panes, overlays,
     // table and labels are emptied now, and runs of the old source still in flight are dropped.
     ++sourceTag_;
@@ -505,7 +561,8 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
     candidates_->setResult(run->result, run->config);
 
     const BallDetection& d = run->result.detection;
-    nav_->setMark(run->frameIndex, FrameMarkKind::Detected, d.found);  // the slider marks every frame seen with a ball
+    if (!live_->isOpen())  // live frames are numbered by the replay buffer, not by slider places
+        nav_->setMark(run->frameIndex, FrameMarkKind::Detected, d.found);  // the slider marks every frame seen with a ball
     if (d.found) {
         resultLabel_->setText(tr("Frame %1: ball at x %2 m, y %3 m (%4 m away, radius %5 px)")
                                   .arg(run->frameIndex).arg(d.xM, 0, 'f', 2).arg(d.yM, 0, 'f', 2)

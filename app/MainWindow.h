@@ -3,6 +3,7 @@
 // navigator, the tuning panel and the config document together. It owns no vision and no
 // editor logic of its own: each lives in widgets/.
 #include "widgets/ConfigDocument.h"
+#include "calib/camera/SimulatedCamera.h"
 #include "calib/source/FrameSource.h"
 #include "widgets/PipelineRunner.h"
 #include "widgets/TruthDocument.h"
@@ -17,12 +18,14 @@ class QLabel;
 namespace omnitune {
 
 class BallModelPanel;
+class CameraPanel;
 class CameraSetup;
 class CandidateTableModel;
 class ColourEditor;
 class ConfigFiles;
 class FrameNavigator;
 class GeometryEditor;
+class LiveController;
 class PaneEditors;
 class NoticeBar;
 class PipelineView;
@@ -46,6 +49,9 @@ public:
     // when the current config has no unsaved changes (else asks). False on failure (reported).
     bool openSource(const QString& path);
     bool openConfig(const QString& path);
+    // Opens a live camera (Camera > Live source; LiveController) as the source. A camera that
+    // cannot be opened is reported in the notice bar and the source on screen stays.
+    bool openCamera(const QString& source, omnitune::SimulatedStart start = SimulatedStart::Good);
     // A config file (.yml, .yaml) opens as the config, anything else as a source.
     bool openPath(const QString& path);
 
@@ -64,6 +70,8 @@ public:
     PaneEditors* paneEditors() const { return paneEditors_; }
     ColourEditor* colourEditor() const { return colours_; }
     CandidateTableModel* candidates() const { return candidates_; }
+    LiveController* live() const { return live_; }
+    CameraPanel* cameraPanel() const { return cameraPanel_; }
     std::shared_ptr<const PipelineRun> lastRun() const { return lastRun_; }
     bool isProcessing() const;
 
@@ -120,6 +128,8 @@ private:
     PaneEditors* paneEditors_ = nullptr;  // the mask and the radial sensors on the panes
     RayStrip* rayStrip_ = nullptr;        // the classes along the selected sensor ray
     ColourEditor* colours_ = nullptr;  // colour classes, sampling on the panes (Colours dock)
+    CameraPanel* cameraPanel_ = nullptr;  // the live camera's features (Camera dock)
+    LiveController* live_ = nullptr;      // live mode, replay buffer, recording
     QLabel* resultLabel_;
     QLabel* truthLabel_;
     QLabel* timingLabel_;

@@ -179,7 +179,7 @@ int main(int argc, char** argv)
         }
     }
     if (auto dir = cl.value("record")) {
-        const CameraRecordingResult rec = recordCamera(camera, *dir, seconds);
+        const CameraRecordingResult rec = recordCamera(camera, *dir, seconds, {}, std::uint64_t(config.camera.recordMinFreeMb) * 1024 * 1024);
         std::cout << "recorded " << rec.frames << " frames to " << *dir << " (" << rec.dropped << " dropped)\n";
         if (rec.error) return fail(rec.error->c_str() + std::string(rec.frames > 0 ? " (the frames written are kept)" : ""));
     }

@@ -17,6 +17,9 @@ struct CameraSettings {
     int whiteBalanceRed = 500;   // IIDC WHITE_BALANCE V/R, 0..1023
     int gain = 200;              // IIDC GAIN, 0..1023
     int brightness = 100;        // IIDC BRIGHTNESS, 0..1023
+    // The workbench's live view, not the camera's registers:
+    double replaySeconds = 10.0;  // s of live frames kept to step through after a pause
+    int recordMinFreeMb = 500;    // MB: a recording stops when its disk has less free space
 };
 
 }  // namespace omnitune

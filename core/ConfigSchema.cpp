@@ -80,6 +80,12 @@ std::vector<ConfigKey> buildSchema()
                         "Camera to open: dc1394, dc1394:GUID, v4l2, v4l2:/dev/videoN or simulated; empty: the first camera found. "
                         "The settings above are written to it when it opens",
                         [](auto& c) -> auto& { return c.camera.source; }));
+    s.push_back(doubleKey("camera.replay_seconds", "s", 1, 120, false,
+                          "Live frames the window keeps to step through after a pause (memory: this x frame rate x one frame)",
+                          [](auto& c) -> auto& { return c.camera.replaySeconds; }));
+    s.push_back(intKey("camera.record_min_free_mb", "MB", 0, 100000000, false,
+                       "A recording from the window or omnitune-camera stops cleanly when its disk has less free space",
+                       [](auto& c) -> auto& { return c.camera.recordMinFreeMb; }));
 
     // automatic camera calibration (ref. [31] of the thesis)
     const auto autoInt = [&s](const char* key, const char* unit, int min, int max, const char* meaning, auto ref) {

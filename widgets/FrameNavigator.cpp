@@ -135,6 +135,7 @@ void FrameNavigator::togglePlay()
         timer_->start();
     }
     playButton_->setIcon(style()->standardIcon(timer_->isActive() ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    emit playingChanged(timer_->isActive());
 }
 
 void FrameNavigator::updateLabels()

@@ -47,6 +47,7 @@ public slots:
 
 signals:
     void frameRequested(int index);
+    void playingChanged(bool playing);  // play / pause toggled (the live view follows it)
 
 private:
     void updateLabels();

@@ -7,7 +7,7 @@
 
 namespace omnitune {
 
-NoticeBar::NoticeBar(QWidget* parent) : QFrame(parent), label_(new QLabel(this))
+NoticeBar::NoticeBar(QWidget* parent) : QFrame(parent), label_(new QLabel(this)), buttons_(new QHBoxLayout)
 {
     setObjectName("notice");
     setFrameShape(QFrame::StyledPanel);
@@ -21,6 +21,7 @@ NoticeBar::NoticeBar(QWidget* parent) : QFrame(parent), label_(new QLabel(this))
     auto* row = new QHBoxLayout(this);
     row->setContentsMargins(6, 2, 2, 2);
     row->addWidget(label_, 1);
+    row->addLayout(buttons_);
     row->addWidget(close, 0, Qt::AlignTop);
     connect(close, &QToolButton::clicked, this, &NoticeBar::clear);
     hide();
@@ -38,8 +39,22 @@ void NoticeBar::add(const QString& title, const QStringList& lines)
     show();
 }
 
+void NoticeBar::addButton(QAction* action)
+{
+    auto* button = new QToolButton(this);
+    button->setDefaultAction(action);
+    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    buttons_->addWidget(button, 0, Qt::AlignTop);
+    show();
+}
+
 void NoticeBar::clear()
 {
+    while (QLayoutItem* item = buttons_->takeAt(0)) {
+        item->widget()->hide();
+        item->widget()->deleteLater();  // its own click may be what clears the bar
+        delete item;
+    }
     entries_.clear();
     label_->clear();
     hide();

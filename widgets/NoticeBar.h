@@ -5,6 +5,8 @@
 #include <QFrame>
 #include <QStringList>
 
+class QAction;
+class QHBoxLayout;
 class QLabel;
 
 namespace omnitune {
@@ -16,11 +18,14 @@ public:
 
     // Adds `lines` under `title` ("Opened with warnings: config.yml") and shows the bar.
     void add(const QString& title, const QStringList& lines);
+    // A button for `action` beside the text ("Reconnect"), until the bar is cleared.
+    void addButton(QAction* action);
     void clear();
     QString text() const;
 
 private:
     QLabel* label_;
+    QHBoxLayout* buttons_;
     QStringList entries_;
 };
 

@@ -1,11 +1,11 @@
 #include "calib/camera/CameraRecording.h"
 
-#include "calib/camera/CameraSettingsIo.h"
-#include "calib/session/SessionWriter.h"
+#include "calib/camera/CameraRecorder.h"
 
 namespace omnitune {
 
-CameraRecordingResult recordCamera(Camera& camera, const std::string& folder, double seconds, const std::string& notes)
+CameraRecordingResult recordCamera(Camera& camera, const std::string& folder, double seconds, const std::string& notes,
+                                   std::uint64_t minFreeBytes)
 {
     CameraRecordingResult result;
     if (!camera.isStarted())
@@ -13,19 +13,15 @@ CameraRecordingResult recordCamera(Camera& camera, const std::string& folder, do
             result.error = err->message;
             return result;
         }
-    SessionInfo info;
-    info.camera = readCameraSettings(camera);
-    info.width = camera.frameSize().width;
-    info.height = camera.frameSize().height;
-    info.frameRate = info.camera.frameRate;
-    info.notes = notes.empty() ? "recorded from " + camera.description() : notes;
-    SessionCreate created = SessionWriter::create(folder, info);
-    if (!created.ok()) {
-        result.error = created.error->toString();
+    CameraRecorderOptions options;
+    options.notes = notes;
+    options.minFreeBytes = minFreeBytes;
+    CameraRecorder::Start started = CameraRecorder::start(camera, folder, options);
+    if (!started.ok()) {
+        result.error = started.error;
         return result;
     }
-    SessionWriter& writer = *created.writer;
-    int lastIndex = -1;
+    CameraRecorder& recorder = *started.recorder;
     double firstTime = -1;
     while (true) {
         Frame frame;
@@ -35,15 +31,12 @@ CameraRecordingResult recordCamera(Camera& camera, const std::string& folder, do
         }
         if (firstTime < 0) firstTime = frame.timestampS;
         if (frame.timestampS - firstTime >= seconds) break;
-        if (lastIndex >= 0) result.dropped += std::max(frame.index - lastIndex - 1, 0);
-        lastIndex = frame.index;
-        if (auto err = writer.appendFrame(frame.image)) {
-            result.error = err->toString();
-            break;
-        }
-        ++result.frames;
+        if (!recorder.push(frame, true)) break;  // stopped by itself: the status says why
     }
-    if (auto err = writer.finish(); err && !result.error) result.error = err->toString();
+    const CameraRecorderStatus status = recorder.finish();
+    result.frames = status.written;
+    result.dropped = status.dropped;
+    if (!result.error) result.error = status.error;
     return result;
 }
 

@@ -1,0 +1,26 @@
+#pragma once
+// Shared by the live-mode tests of the window: opening the simulated camera through the real
+// Camera > Live source action and waiting (event driven) for its first processed frame.
+#include "widgets/LiveController.h"
+
+#include "WindowTestSupport.h"
+
+#include <QAction>
+
+namespace omnitune::testing {
+
+inline bool openSimulatedCamera(MainWindow& w)
+{
+    auto* action = w.findChild<QAction*>("cameraSource:simulated");
+    if (!action) return false;
+    action->trigger();
+    if (!w.live()->isOpen()) return false;
+    QSignalSpy spy(&w, &MainWindow::runShown);
+    for (int i = 0; i < 100; ++i) {
+        if (w.lastRun() && w.lastRun()->error.isEmpty()) return true;
+        spy.wait(200);
+    }
+    return false;
+}
+
+}  // namespace omnitune::testing

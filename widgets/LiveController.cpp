@@ -1,0 +1,339 @@
+#include "widgets/LiveController.h"
+
+#include "calib/camera/CameraFrameSource.h"
+#include "calib/camera/CameraSettingsIo.h"
+#include "calib/camera/ReplaySource.h"
+#include "core/Geometry.h"
+#include "widgets/CameraPanel.h"
+#include "widgets/CameraSourceMenu.h"
+#include "widgets/ConfigDocument.h"
+#include "widgets/FrameNavigator.h"
+#include "widgets/PipelineRunner.h"
+#include "widgets/RecordBar.h"
+
+#include <QAction>
+#include <QFileDialog>
+#include <QLabel>
+#include <QMenu>
+#include <QTimer>
+
+namespace omnitune {
+
+LiveController::LiveController(const ConfigDocument* doc, FrameNavigator* nav, PipelineRunner* runner,
+                               CameraPanel* cameraPanel, QWidget* window)
+    : QObject(window), doc_(doc), nav_(nav), runner_(runner), cameraPanel_(cameraPanel), window_(window),
+      statusLabel_(new QLabel(window)), recordBar_(new RecordBar(window))
+{
+    statusLabel_->setObjectName("liveStatus");
+    statusLabel_->hide();
+    clock_.start();
+    connect(nav_, &FrameNavigator::playingChanged, this, &LiveController::onPlayingChanged);
+    connect(doc_, &ConfigDocument::changed, this, &LiveController::configChanged);
+    connect(runner_, &PipelineRunner::finished, this, &LiveController::onRunFinished);
+    connect(recordBar_, &RecordBar::stopRequested, this, &LiveController::stopRecording);
+    connect(recordBar_, &RecordBar::stoppedByItself, this, &LiveController::stopRecording);
+    reconnect_ = new QAction(tr("&Reconnect camera"), this);
+    reconnect_->setObjectName("cameraReconnect");
+    connect(reconnect_, &QAction::triggered, this, &LiveController::reconnect);
+    record_ = new QAction(tr("&Record to a new session folder..."), this);
+    record_->setObjectName("cameraRecord");
+    record_->setStatusTip(tr("Write the live frames into a session folder, with the camera settings in session.yml"));
+    connect(record_, &QAction::triggered, this, &LiveController::chooseRecordingFolder);
+    stopRecord_ = new QAction(tr("S&top recording"), this);
+    stopRecord_->setObjectName("cameraStopRecording");
+    connect(stopRecord_, &QAction::triggered, this, &LiveController::stopRecording);
+    updateActions();
+}
+
+LiveController::~LiveController()
+{
+    // The window calls close() while its widgets exist; here only what needs none of them.
+    recorder_.reset();  // finishes the session
+    if (!camera_) return;
+    if (cameraPanel_) cameraPanel_->setCamera(nullptr);
+    camera_->camera().stop();
+    camera_->camera().close();
+}
+
+void LiveController::fillMenu(QMenu* camera)
+{
+    auto* sources = new CameraSourceMenu(camera->addMenu(tr("Live &source")), this);
+    connect(sources, &CameraSourceMenu::chosen, this, &LiveController::sourceChosen);
+    camera->addAction(record_);
+    camera->addAction(stopRecord_);
+    camera->addAction(reconnect_);
+}
+
+CameraOpen LiveController::openCamera(const QString& source, SimulatedStart start, const Config& config)
+{
+    SimulatedCameraOptions simulated;
+    simulated.start = start;
+    return omnitune::openCamera(source.toStdString(), config.camera.frameRate, simulated);
+}
+
+std::shared_ptr<FrameSource> LiveController::start(std::unique_ptr<Camera> camera, bool applySettings)
+{
+    close();
+    const Config& config = doc_->config();
+    camera_ = std::make_unique<CameraFrameSource>(std::move(camera));
+    replay_ = std::make_shared<ReplayBuffer>(ReplayBuffer::capacityFor(config.camera.replaySeconds, config.camera.frameRate));
+    applySettings_ = applySettings;
+    failed_ = false;
+    pendingSeq_ = shownSeq_ = lastCameraIndex_ = -1;
+    dropped_ = 0;
+    shownAt_.clear();
+    QStringList notes;
+    if (applySettings_) this->applySettings(notes);
+    emit notice(tr("Camera settings from the config (camera section) on %1:").arg(description()), notes, nullptr);
+    giveCameraToPanel();
+    statusLabel_->show();
+    nav_->setFrameRate(config.camera.frameRate);
+    if (nav_->isPlaying()) nav_->togglePlay();  // a recorded source played: restart as live
+    nav_->togglePlay();
+    updateActions();
+    return std::make_shared<ReplaySource>(replay_, camera_->description(), camera_->frameSize());
+}
+
+void LiveController::close()
+{
+    if (!camera_) return;
+    stopRecording();
+    if (cameraPanel_) cameraPanel_->setCamera(nullptr);  // before the camera goes
+    Camera& c = camera_->camera();
+    if (nav_->isPlaying()) nav_->togglePlay();  // (onPlayingChanged sees the camera still open)
+    c.stop();
+    c.close();
+    camera_.reset();
+    replay_.reset();  // the runner's ReplaySource keeps its own reference while it reads
+    statusLabel_->clear();
+    statusLabel_->hide();
+    updateActions();
+}
+
+Camera* LiveController::camera() const { return camera_ ? &camera_->camera() : nullptr; }
+
+QString LiveController::description() const { return camera_ ? QString::fromStdString(camera_->description()) : QString(); }
+
+void LiveController::applySettings(QStringList& notes)
+{
+    const CameraSettingsApply applied = applyCameraSettings(camera_->camera(), doc_->config().camera);
+    for (const std::string& n : applied.notes) notes << QString::fromStdString(n);
+    if (applied.error) notes << QString::fromStdString(applied.error->message);
+}
+
+cv::Mat LiveController::usedPixels() const
+{
+    const Config& config = doc_->config();
+    try {
+        const Geometry geometry(config.geometry, config.mask);
+        if (geometry.imageSize() == camera_->frameSize()) return geometry.usedMask();
+    } catch (const std::exception&) {
+        // a config whose geometry cannot be built: the whole frame counts
+    }
+    return {};  // the pixels the calibration's MSV counts: the geometry's, when it fits this camera
+}
+
+void LiveController::giveCameraToPanel()
+{
+    if (!cameraPanel_) return;
+    cameraPanel_->setCamera(&camera_->camera(), doc_->config().cameraAuto, usedPixels());
+    emit cameraOpened();
+}
+
+void LiveController::configChanged(const QString& key)
+{
+    // A dragged reference region, new targets or a new mask reach the panel's histogram and its
+    // next calibration at once.
+    if (!camera_ || !cameraPanel_) return;
+    if (key.isEmpty() || key.startsWith("camera_auto.") || key.startsWith("geometry.") || key.startsWith("mask"))
+        cameraPanel_->setOptions(doc_->config().cameraAuto, usedPixels());
+}
+
+bool LiveController::handleNavigation(int position)
+{
+    if (!camera_) return false;
+    if (!nav_->isPlaying())
+        showPosition(position);
+    else if (!failed_)  // (after a fault, onPlayingChanged stops the play again)
+        grab();
+    return true;
+}
+
+void LiveController::onPlayingChanged(bool playing)
+{
+    if (!camera_) return;
+    if (playing && failed_) {
+        QTimer::singleShot(0, this, [this] {
+            if (nav_->isPlaying()) nav_->togglePlay();
+        });
+        return;
+    }
+    // Live: the slider holds the buffer and one place more, so that the navigator's next()
+    // always has somewhere to go (a tick); paused: exactly the buffer's frames.
+    const int size = replay_->size();
+    if (playing) {
+        lastCameraIndex_ = -1;  // frames the camera gave while paused are not dropped ones
+        nav_->setFrameCount(size + 1);
+        nav_->setCurrent(std::max(size - 1, 0));
+        QTimer::singleShot(0, this, [this] {
+            if (camera_ && nav_->isPlaying()) grab();  // the first frame now, not a tick later
+        });
+    } else {
+        nav_->setFrameCount(size);
+        nav_->setCurrent(std::max(replay_->positionOf(shownSeq_), 0));
+    }
+    updateStatus();
+}
+
+void LiveController::grab()
+{
+    Frame frame;
+    if (const auto err = camera_->read(FrameSource::kNext, frame)) {
+        fail(QString::fromStdString(err->message));
+        return;
+    }
+    frame.index = camera_->lastCameraIndex();  // the camera's own count: gaps are frames it dropped
+    if (lastCameraIndex_ >= 0) dropped_ += std::max(frame.index - lastCameraIndex_ - 1, 0);
+    lastCameraIndex_ = frame.index;
+    if (recorder_) recorder_->push(frame, false);
+    const int seq = replay_->push(frame);
+    if (cameraPanel_) cameraPanel_->showFrame(frame.image);  // histogram and MSV, throttled by the panel
+    const int size = replay_->size();
+    if (nav_->frameCount() != size + 1) nav_->setFrameCount(size + 1);
+    nav_->setCurrent(size - 1);  // live: the slider sits on the newest frame
+    offer(seq);
+    updateStatus();
+}
+
+void LiveController::offer(int seq)
+{
+    if (runner_->isBusy()) {
+        if (pendingSeq_ >= 0) ++dropped_;  // replaced before the pipeline got to it
+        pendingSeq_ = seq;
+        return;
+    }
+    pendingSeq_ = -1;
+    shownSeq_ = seq;
+    emit frameWanted(seq);
+    // The window set the sequence number as the navigator's place: put the place back.
+    nav_->setCurrent(nav_->isPlaying() ? replay_->size() - 1 : replay_->positionOf(seq));
+}
+
+void LiveController::showPosition(int position)
+{
+    pendingSeq_ = -1;  // the user's step wins over a live frame still waiting
+    // The slider may still hold the extra place of live mode: the newest frame is the last.
+    const int seq = replay_->seqAt(replay_->step(position, 0));
+    if (seq < 0) return;
+    shownSeq_ = seq;
+    emit frameWanted(seq);
+    nav_->setCurrent(replay_->positionOf(seq));
+    updateStatus();
+}
+
+void LiveController::onRunFinished()
+{
+    if (!camera_) return;
+    if (nav_->isPlaying()) {
+        const qint64 now = clock_.elapsed();
+        shownAt_.push_back(now);
+        while (!shownAt_.empty() && shownAt_.front() < now - 1000) shownAt_.pop_front();
+    }
+    if (pendingSeq_ >= 0 && !runner_->isBusy()) offer(pendingSeq_);
+}
+
+QString LiveController::statusText() const
+{
+    if (!camera_) return {};
+    if (failed_) return tr("camera stopped");
+    if (!nav_->isPlaying()) {
+        const int position = replay_->positionOf(shownSeq_);
+        return tr("paused \u00b7 frame %1 of %2 in the replay buffer").arg(position + 1).arg(replay_->size());
+    }
+    return tr("live \u00b7 %1 fps \u00b7 %2 dropped").arg(shownAt_.size()).arg(dropped_);
+}
+
+void LiveController::updateStatus()
+{
+    statusLabel_->setText(statusText());
+    statusLabel_->setStyleSheet(failed_ ? "color: #c00000" : nav_->isPlaying() ? "color: #007000" : QString());
+}
+
+void LiveController::fail(const QString& why)
+{
+    failed_ = true;
+    if (nav_->isPlaying()) nav_->togglePlay();
+    if (cameraPanel_) cameraPanel_->setCamera(nullptr);  // the panel must not write to a dead camera
+    stopRecording();
+    updateStatus();
+    updateActions();
+    emit notice(tr("The camera stopped: %1").arg(description()),
+                {why, tr("Frames so far stay in the replay buffer; Reconnect opens the camera again.")}, reconnect_);
+}
+
+void LiveController::reconnect()
+{
+    if (!camera_) return;
+    Camera& c = camera_->camera();
+    c.stop();
+    c.close();
+    if (const auto err = c.open()) {
+        emit notice(tr("Cannot reconnect %1:").arg(description()), {QString::fromStdString(err->message)}, reconnect_);
+        return;
+    }
+    failed_ = false;
+    QStringList notes;
+    if (applySettings_) applySettings(notes);
+    emit notice(tr("Reconnected %1; camera settings:").arg(description()), notes, nullptr);
+    giveCameraToPanel();
+    updateActions();
+    if (!nav_->isPlaying()) nav_->togglePlay();
+}
+
+QString LiveController::startRecording(const QString& folder)
+{
+    if (!camera_ || failed_) return tr("No live camera to record: open one from Camera > Live source");
+    if (recorder_) return tr("Already recording to %1").arg(QString::fromStdString(recorder_->folder()));
+    const Config& config = doc_->config();
+    CameraRecorderOptions options;
+    options.config = config;  // the session replays with the config it was recorded under
+    options.minFreeBytes = std::uint64_t(std::max(config.camera.recordMinFreeMb, 0)) * 1024 * 1024;
+    options.queueFrames = std::max(8, int(config.camera.frameRate));  // about a second of frames
+    CameraRecorder::Start started = CameraRecorder::start(camera_->camera(), folder.toStdString(), options);
+    if (!started.ok()) return QString::fromStdString(started.error);
+    recorder_ = std::move(started.recorder);
+    recordBar_->setRecorder(recorder_.get());
+    if (!nav_->isPlaying()) nav_->togglePlay();  // frames come from the live view
+    updateActions();
+    return {};
+}
+
+void LiveController::stopRecording()
+{
+    if (!recorder_) return;
+    recordBar_->setRecorder(nullptr);
+    const CameraRecorderStatus s = recorder_->finish();
+    const QString folder = QString::fromStdString(recorder_->folder());
+    recorder_.reset();
+    updateActions();
+    QStringList lines{tr("%1 frames written, %2 dropped; File > Open session or image folder replays it").arg(s.written).arg(s.dropped)};
+    if (s.error) lines.prepend(QString::fromStdString(*s.error));
+    emit notice(tr("Recording to %1 ended:").arg(folder), lines, nullptr);
+}
+
+void LiveController::chooseRecordingFolder()
+{
+    const QString folder = QFileDialog::getExistingDirectory(window_, tr("Record into a new (or empty) folder"));
+    if (folder.isEmpty()) return;
+    const QString error = startRecording(folder);
+    if (!error.isEmpty()) emit notice(tr("Cannot record:"), {error}, nullptr);
+}
+
+void LiveController::updateActions()
+{
+    record_->setEnabled(camera_ && !failed_ && !recorder_);
+    stopRecord_->setEnabled(recorder_ != nullptr);
+    reconnect_->setEnabled(camera_ && failed_);
+}
+
+}  // namespace omnitune
