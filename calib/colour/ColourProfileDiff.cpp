@@ -98,4 +98,13 @@ ClassChanges classChanges(const cv::Mat& frame, PixelFormat format, const Geomet
     return out;
 }
 
+cv::Mat classChangeImage(const cv::Mat& bgr, const cv::Mat& changed, double dim)
+{
+    CV_Assert(bgr.type() == CV_8UC3 && changed.type() == CV_8UC1 && bgr.size() == changed.size());
+    cv::Mat out;
+    bgr.convertTo(out, -1, dim);
+    out.setTo(cv::Scalar(255, 0, 255), changed);
+    return out;
+}
+
 }  // namespace omnitune
