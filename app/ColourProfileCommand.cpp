@@ -68,6 +68,7 @@ int runColourProfile(const CommandLine& cl)
     if (!out) return fail("--profile-load writes the config with the profile's colours: give --out OUT.yml");
     Config next = load.config;
     next.colors = profile.profile.colors;
+    next.colors.sampleOutlierPct = load.config.colors.sampleOutlierPct;  // the sampling setting, not the venue's
     const bool existed = std::filesystem::exists(*out);
     if (const auto err = saveConfig(next, *out, true)) return fail(err->toString());
     std::cout << "wrote " << *out << " with the colours of profile \"" << profile.profile.name << "\" (" << path << ")"

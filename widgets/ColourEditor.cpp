@@ -83,7 +83,7 @@ ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* par
     auto* layout = new QVBoxLayout(inner);
     layout->setContentsMargins(4, 4, 4, 4);
 
-    layout->addWidget(new ColourSamplingBox(sampler_, inner));
+    layout->addWidget(new ColourSamplingBox(doc_, sampler_, inner));
     layout->addWidget(classList_);
 
     // The selected class.
@@ -415,7 +415,14 @@ std::optional<QString> ColourEditor::renameClass(const QString& name)
         return tr("\"%1\" cannot name a class: lower case a-z first, then a-z, 0-9 and _ (not \"unknown\" or \"none\")").arg(name);
     const int other = findColourClass(classes(), n);
     if (other >= 0 && other != currentClass()) return tr("A class named %1 exists already").arg(name);
-    return editClass(tr("Rename class to %1"), [&](ColourClassDef& d) { d.name = n; });
+    // The ball hint names the class by name: it follows the rename in the same undo step.
+    const int c = currentClass();
+    if (c < 0) return tr("No class selected");
+    Config next = doc_->config();
+    const std::string old = next.colors.classes[std::size_t(c)].name;
+    next.colors.classes[std::size_t(c)].name = n;
+    if (next.validation.ballHint == old) next.validation.ballHint = n;
+    return commit(next, tr("Rename class %1 to %2").arg(QString::fromStdString(old), name.trimmed()));
 }
 
 std::optional<QString> ColourEditor::setRole(ColourRole role)

@@ -135,6 +135,7 @@ std::optional<QString> ColourProfilesBox::loadProfile(const QString& path)
     if (!load.ok()) return tr("Profile not loaded: %1").arg(qs(load.error->toString()));
     Config next = doc_->config();
     next.colors = load.profile.colors;
+    next.colors.sampleOutlierPct = doc_->config().colors.sampleOutlierPct;  // the tab's setting, not the venue's
     if (const auto why = doc_->replaceConfig(next, tr("Load colour profile %1").arg(qs(load.profile.name))))
         return tr("Profile %1 not loaded: %2").arg(path, *why);
     emit message(tr("Loaded colour profile \"%1\" (Undo restores the colours before)").arg(qs(load.profile.name)));

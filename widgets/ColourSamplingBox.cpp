@@ -1,11 +1,13 @@
 #include "widgets/ColourSamplingBox.h"
 
 #include "widgets/ColourSampler.h"
+#include "widgets/ConfigDocument.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QToolButton>
 
@@ -13,8 +15,14 @@
 
 namespace omnitune {
 
-ColourSamplingBox::ColourSamplingBox(ColourSampler* sampler, QWidget* parent)
-    : QGroupBox(tr("Sampling on the panes"), parent), sampler_(sampler), sampleButton_(new QToolButton),
+namespace {
+
+const QString kOutlierKey = QStringLiteral("colors.sample_outlier_percent");
+
+}  // namespace
+
+ColourSamplingBox::ColourSamplingBox(ConfigDocument* doc, ColourSampler* sampler, QWidget* parent)
+    : QGroupBox(tr("Sampling on the panes"), parent), doc_(doc), sampler_(sampler), sampleButton_(new QToolButton),
       tool_(new QComboBox), radius_(new QSpinBox), tolH_(new QSpinBox), tolS_(new QSpinBox), tolV_(new QSpinBox),
       outliers_(new QDoubleSpinBox)
 {
@@ -51,10 +59,10 @@ ColourSamplingBox::ColourSamplingBox(ColourSampler* sampler, QWidget* parent)
     outliers_->setDecimals(1);
     outliers_->setSingleStep(0.5);
     outliers_->setSuffix(tr(" %"));
-    outliers_->setValue(sampler_->fitOptions().outlierPct);
+    outliers_->setValue(doc_->config().colors.sampleOutlierPct);
     outliers_->setObjectName("outlierPct");
     outliers_->setToolTip(tr("Share of a stroke's samples ignored at each end of H, S and V (stray pixels at a ball's "
-                             "blurred edge); 0 covers every sample"));
+                             "blurred edge); 0 covers every sample. Saved in the config: colors.sample_outlier_percent"));
     sl->addRow(tr("Ignore outliers"), outliers_);
 
     connect(sampleButton_, &QToolButton::toggled, sampler_, &ColourSampler::setSampling);
@@ -75,9 +83,11 @@ ColourSamplingBox::ColourSamplingBox(ColourSampler* sampler, QWidget* parent)
             sampler_->setWandTolerance(t);
         });
     connect(outliers_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double pct) {
-        BoxFitOptions o = sampler_->fitOptions();
-        o.outlierPct = pct;
-        sampler_->setFitOptions(o);
+        if (pct != doc_->config().colors.sampleOutlierPct) doc_->setValue(kOutlierKey, pct);
+    });
+    connect(doc_, &ConfigDocument::changed, this, [this] {
+        const QSignalBlocker block(outliers_);
+        outliers_->setValue(doc_->config().colors.sampleOutlierPct);
     });
 }
 
