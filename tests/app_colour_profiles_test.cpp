@@ -134,6 +134,30 @@ private slots:
         QCOMPARE(rowOf(QStringLiteral("Home lab")), -1);
     }
 
+    // With OMNITUNE_SCREENSHOT_DIR set: the profiles group and the diff view for the user guide
+    // (docs/images/colour-profiles.png, colour-diff.png; under xvfb-run for real fonts).
+    void screenshot()
+    {
+        const QString dir = qEnvironmentVariable("OMNITUNE_SCREENSHOT_DIR");
+        if (dir.isEmpty()) QSKIP("OMNITUNE_SCREENSHOT_DIR not set");
+        QVERIFY(!openDemo().isEmpty());
+        window_->resize(1366, 768);
+        QVERIFY(!box()->saveProfile(QStringLiteral("home lab")));
+        Config venue = doc()->config();
+        auto& green = venue.colors.classes[std::size_t(findColourClass(venue.colors.classes, "green"))].boxes[0];
+        green.hMin += 6;
+        green.sMin += 25;
+        QVERIFY(!doc()->replaceConfig(venue, QStringLiteral("venue")));
+        QVERIFY(!box()->saveProfile(QStringLiteral("venue field A")));
+        box()->list()->setCurrentRow(rowOf(QStringLiteral("home lab")));
+        QVERIFY(!box()->loadProfile(box()->selectedPath()));
+        box()->list()->setCurrentRow(rowOf(QStringLiteral("venue field A")));
+        QVERIFY(waitForFrame(*window_, 0));
+        QVERIFY(!box()->compareProfile(box()->selectedPath()));
+        QVERIFY(box()->grab().save(dir + "/colour-profiles.png"));
+        QVERIFY(box()->diffView()->grab().save(dir + "/colour-diff.png"));
+    }
+
     void profilesOnTheCommandLine()
     {
         const QString dir = tmp_.filePath(QStringLiteral("cli"));

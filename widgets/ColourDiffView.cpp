@@ -11,11 +11,14 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
+#include <cmath>
+
 namespace omnitune {
 
 namespace {
 
-constexpr int kPictureSide = 420;  // px on screen; the frame scales to fit
+constexpr int kPictureSide = 480;  // px on screen; the frame scales to fit
 
 }  // namespace
 
@@ -52,7 +55,9 @@ ColourDiffView::ColourDiffView(const QString& leftName, const ColorLutOptions& l
         differing += row.same ? 0 : 1;
     }
     table_->resizeColumnsToContents();
-    table_->horizontalHeader()->setStretchLastSection(true);
+    table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
+    table_->horizontalHeader()->setSectionResizeMode(2, QHeaderView::Stretch);
     layout->addWidget(new QLabel(differing == 0 ? tr("The two calibrations are the same.")
                                                 : tr("%n row(s) differ (highlighted).", nullptr, differing)));
     layout->addWidget(table_, 1);
@@ -66,7 +71,10 @@ ColourDiffView::ColourDiffView(const QString& leftName, const ColorLutOptions& l
         const ClassChanges changes =
             classChanges(frame.raw, frame.format, Geometry(frame.config.geometry, frame.config.mask), left, right);
         changed_ = changes.changed;
-        const QImage image = toQImage(classChangeImage(frame.acquired, changes.mask));
+        // A changed pixel stays visible when the frame is shown smaller: marks of about one screen px.
+        const double shrink = double(std::max(size.width, size.height)) / kPictureSide;
+        const int mark = shrink > 1.2 ? int(std::ceil(shrink / 2.0)) : 0;
+        const QImage image = toQImage(classChangeImage(frame.acquired, changes.mask, 0.35, mark));
         picture_->setPixmap(QPixmap::fromImage(image.scaled(kPictureSide, kPictureSide, Qt::KeepAspectRatio, Qt::SmoothTransformation)));
         summary_->setText(tr("Frame %1, dimmed: the pixels in magenta change class, %2 % of the processed pixels (%3 px).")
                               .arg(frame.index)
@@ -80,7 +88,7 @@ ColourDiffView::ColourDiffView(const QString& leftName, const ColorLutOptions& l
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);
-    resize(720, 760);
+    resize(960, 820);
 }
 
 }  // namespace omnitune

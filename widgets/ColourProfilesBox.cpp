@@ -111,7 +111,9 @@ void ColourProfilesBox::refreshList()
         if (e.error) item->setForeground(QColor(170, 0, 0));
         if (qs(e.path) == keep) list_->setCurrentItem(item);
     }
-    hint_->setText(entries.empty() ? tr("No profiles yet in %1: Save as… makes one.").arg(dir) : tr("In %1").arg(dir));
+    hint_->setText(entries.empty() ? tr("No profiles yet beside this config: Save as… makes one.")
+                                   : tr("%n profile(s) in colour-profiles/ beside the config", nullptr, int(entries.size())));
+    hint_->setToolTip(dir);
 }
 
 std::optional<QString> ColourProfilesBox::saveProfile(const QString& name)
