@@ -12,18 +12,6 @@
 
 namespace omnitune {
 
-namespace {
-
-QPushButton* button(const QString& text, const QString& tip, const QString& name, QWidget* parent)
-{
-    auto* b = new QPushButton(text, parent);
-    b->setToolTip(tip);
-    b->setObjectName(name);
-    return b;
-}
-
-}  // namespace
-
 QString colourSharePct(double pct) { return QString::number(pct, 'f', pct > 0 && pct < 1 ? 2 : 1) + QStringLiteral(" %"); }
 
 ColourClassList::ColourClassList(QWidget* parent)
@@ -35,13 +23,13 @@ ColourClassList::ColourClassList(QWidget* parent)
                          "on or off; the percentage is its share of the processed pixels of the frame on screen"));
     cl->addWidget(list_);
     auto* row = new QHBoxLayout;
-    QPushButton* add = button(tr("Add"), tr("A new class at the end of the list; sample into it"), "addClass", this);
-    QPushButton* remove = button(tr("Remove"), tr("Remove the selected class"), "removeClass", this);
-    QPushButton* up = button(tr("Up"), tr("Higher priority: wins pixels it shares with the class above"), "classUp", this);
-    QPushButton* down = button(tr("Down"), tr("Lower priority"), "classDown", this);
+    QPushButton* add = colourTabButton(tr("Add"), tr("A new class at the end of the list; sample into it"), "addClass", this);
+    QPushButton* remove = colourTabButton(tr("Remove"), tr("Remove the selected class"), "removeClass", this);
+    QPushButton* up = colourTabButton(tr("Up"), tr("Higher priority: wins pixels it shares with the class above"), "classUp", this);
+    QPushButton* down = colourTabButton(tr("Down"), tr("Lower priority"), "classDown", this);
     for (QPushButton* b : {add, remove, up, down}) row->addWidget(b);
     cl->addLayout(row);
-    QPushButton* autoButton = button(tr("Auto colours from this frame"),
+    QPushButton* autoButton = colourTabButton(tr("Auto colours from this frame"),
                                      tr("First guess: the dominant hue of the processed area is the carpet; black "
                                         "and white relative to its brightness; one undo step"),
                                      "autoColours", this);

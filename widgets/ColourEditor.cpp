@@ -53,13 +53,6 @@ ClassBoxes boxesOf(const ColourClasses& classes)
     return out;
 }
 
-QPushButton* smallButton(const QString& text, const QString& tip, const QString& name, QWidget* parent)
-{
-    auto* b = new QPushButton(text, parent);
-    b->setToolTip(tip);
-    b->setObjectName(name);
-    return b;
-}
 
 }  // namespace
 
@@ -106,8 +99,8 @@ ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* par
                             "strokes grow the selected box"));
     form->addRow(boxList_);
     auto* boxButtons = new QHBoxLayout;
-    QPushButton* addBoxButton = smallButton(tr("Add box"), tr("A new box: the next stroke makes it"), "addBox", classBox);
-    QPushButton* removeBoxButton = smallButton(tr("Remove box"), tr("Remove the selected box (a class keeps one at least)"),
+    QPushButton* addBoxButton = colourTabButton(tr("Add box"), tr("A new box: the next stroke makes it"), "addBox", classBox);
+    QPushButton* removeBoxButton = colourTabButton(tr("Remove box"), tr("Remove the selected box (a class keeps one at least)"),
                                                "removeBox", classBox);
     boxButtons->addWidget(addBoxButton);
     boxButtons->addWidget(removeBoxButton);

@@ -2,6 +2,7 @@
 
 #include "calib/colour/ColourProfile.h"
 #include "widgets/ColourDiffView.h"
+#include "widgets/ColourSwatch.h"
 #include "widgets/ConfigDocument.h"
 
 #include <QFileInfo>
@@ -24,14 +25,6 @@ namespace {
 
 QString qs(const std::string& s) { return QString::fromStdString(s); }
 
-QPushButton* button(const QString& text, const QString& tip, const QString& name, QWidget* parent)
-{
-    auto* b = new QPushButton(text, parent);
-    b->setToolTip(tip);
-    b->setObjectName(name);
-    return b;
-}
-
 }  // namespace
 
 ColourProfilesBox::ColourProfilesBox(ConfigDocument* doc, QWidget* parent)
@@ -47,11 +40,11 @@ ColourProfilesBox::ColourProfilesBox(ConfigDocument* doc, QWidget* parent)
     hint_->setWordWrap(true);
     layout->addWidget(hint_);
     auto* row = new QHBoxLayout;
-    QPushButton* save = button(tr("Save as…"), tr("Save the config's colours as a profile under a name"), "saveProfile", this);
-    QPushButton* load = button(tr("Load"), tr("The selected profile's colours replace the config's (one undo step)"),
+    QPushButton* save = colourTabButton(tr("Save as…"), tr("Save the config's colours as a profile under a name"), "saveProfile", this);
+    QPushButton* load = colourTabButton(tr("Load"), tr("The selected profile's colours replace the config's (one undo step)"),
                                "loadProfile", this);
-    QPushButton* remove = button(tr("Delete"), tr("Delete the selected profile's file"), "deleteProfile", this);
-    QPushButton* compare = button(tr("Compare…"),
+    QPushButton* remove = colourTabButton(tr("Delete"), tr("Delete the selected profile's file"), "deleteProfile", this);
+    QPushButton* compare = colourTabButton(tr("Compare…"),
                                   tr("The selected profile against the config's colours: ranges side by side and the "
                                      "pixels of the frame on screen that change class"),
                                   "compareProfile", this);

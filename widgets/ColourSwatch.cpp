@@ -1,6 +1,7 @@
 #include "widgets/ColourSwatch.h"
 
 #include <QPainter>
+#include <QPushButton>
 #include <QPixmap>
 
 namespace omnitune {
@@ -13,6 +14,14 @@ QIcon colourSwatch(const QColor& colour)
     painter.setPen(Qt::black);
     painter.drawRect(0, 0, 13, 13);
     return QIcon(p);
+}
+
+QPushButton* colourTabButton(const QString& text, const QString& tip, const QString& name, QWidget* parent)
+{
+    auto* b = new QPushButton(text, parent);
+    b->setToolTip(tip);
+    b->setObjectName(name);
+    return b;
 }
 
 }  // namespace omnitune

@@ -1,8 +1,11 @@
 #pragma once
-// Small pictures of a colour class for the Colours tab's lists: its display colour as a Qt
-// colour and as a framed square icon.
+// Small shared pieces of the Colours tab: a class's display colour as a Qt colour and as a
+// framed square icon for the lists, and the tab's push buttons (named for tests, with a tip).
 #include <QColor>
 #include <QIcon>
+
+class QPushButton;
+class QWidget;
 
 #include <array>
 #include <cstdint>
@@ -14,5 +17,8 @@ inline QColor toQColor(const std::array<std::uint8_t, 3>& bgr) { return QColor(b
 
 // A 14 px square of `colour` with a black frame (a white class stays visible on white).
 QIcon colourSwatch(const QColor& colour);
+
+// A push button with `text`, tooltip `tip` and object name `name`.
+QPushButton* colourTabButton(const QString& text, const QString& tip, const QString& name, QWidget* parent);
 
 }  // namespace omnitune
