@@ -2,6 +2,7 @@
 // subcommand reads a config, fits one part of it, prints what it fitted with its residuals and
 // writes the updated config atomically (the previous OUT kept as OUT.bak). When a fit cannot be
 // made it exits non-zero with a one-line reason and writes nothing.
+#include "app/ColourProfileCommand.h"
 #include "app/CommandLine.h"
 #include "app/StderrProgress.h"
 #include "app/ToolConfig.h"
@@ -51,6 +52,9 @@ const std::vector<OptionSpec> kOptions = {
     {"auto", false, false, "      mask: propose the robot's structure from frames in which the robot drives or turns"},
     {"import", true, false, "FILE  mask: convert a mask image made elsewhere (needs --config or a session's)"},
     {"process", true, false, "SIDE  mask --import: white (bright, any colour, = process; the default) or black"},
+    {"profile-list", false, false, "      colours: list the venue profiles beside --config (CONFIG_DIR/colour-profiles/)"},
+    {"profile-save", true, false, "NAME  colours: save --config's colours as the profile NAME (no --input, no --out)"},
+    {"profile-load", true, false, "NAME  colours: write --out with --config's settings and profile NAME's colours"},
     {"help", false, false, "      this text"},
 };
 
@@ -60,7 +64,9 @@ const char* const kSummary =
     "  rim            mirror centre, outer radius (from the rim) and inner radius (from the robot body)\n"
     "  colours        first colour calibration: the dominant hue in the used area is the carpet; green,\n"
     "                 white and black set from it (run after rim: it needs the geometry)\n"
-    "  distance-map   image radius -> ground distance from --points\n"
+    "  colours --profile-list | --profile-save NAME | --profile-load NAME --out OUT.yml\n"
+    "                 the window's venue profiles: colour calibrations by name in colour-profiles/ beside\n"
+    "                 --config\n"    "  distance-map   image radius -> ground distance from --points\n"
     "  ball-model     expected ball radius r(d) from the truth marks of the --input session or --samples\n"
     "  mask --auto    robot mask (body, support rods, reflections): what stays put while the field moves\n"
     "  mask --import  a mask made elsewhere, in OmniTune's convention (white = process)";
@@ -465,6 +471,10 @@ int main(int argc, char** argv)
         return fail((subcommand.empty() ? std::string("no subcommand") : "unknown subcommand '" + subcommand + "'") +
                     ": rim, colours, distance-map, ball-model or mask (see --help)");
     if (!cl.error.empty()) return fail(cl.error + " (see --help)");
+    if (wantsColourProfile(cl)) {
+        if (subcommand != "colours") return fail("--profile-list, --profile-save and --profile-load go with colours");
+        return runColourProfile(cl);
+    }
     if (!cl.has("out")) return fail("--out OUT.yml is required (see --help)");
     const std::string out = *cl.value("out");
     try {

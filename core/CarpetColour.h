@@ -32,7 +32,7 @@ public:
     // Enough carpet was seen around the candidate to judge colours by it.
     bool valid() const { return samples_ >= kMinSamples; }
     int samples() const { return samples_; }
-    double hue() const { return hue_; }
+    double hue() const { return hue_; }  // circular mean, 0..180 (a red carpet's wraps through 0)
     double saturation() const { return sat_; }
 
     // Whether `c` is the carpet's colour (always true when not valid()).

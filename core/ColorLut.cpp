@@ -13,7 +13,7 @@ namespace omnitune {
 bool operator==(const ColorLutOptions& a, const ColorLutOptions& b)
 {
     return a.classes == b.classes && a.bits == b.bits && a.blackRelative == b.blackRelative &&
-           a.blackVRatio == b.blackVRatio;
+           a.blackVRatio == b.blackVRatio && a.sampleOutlierPct == b.sampleOutlierPct;
 }
 
 std::array<std::uint8_t, 3> yuvToBgr(int y, int u, int v)

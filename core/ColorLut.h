@@ -33,6 +33,10 @@ struct ColorLutOptions {
     // change in normal and bright light), hence on by default.
     bool blackRelative = true;
     double blackVRatio = 0.45;
+    // Not used by the table: the share of a sampling stroke's colours ignored at each end of H,
+    // S and V when the Colours tab grows a box (calib/colour/BoxFit.h's outlierPct). Ours: 1 %
+    // keeps a brush stroke's blurred ball rim from stretching the ball's box.
+    double sampleOutlierPct = 1.0;
 };
 bool operator==(const ColorLutOptions& a, const ColorLutOptions& b);
 inline bool operator!=(const ColorLutOptions& a, const ColorLutOptions& b) { return !(a == b); }

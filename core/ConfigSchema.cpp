@@ -162,6 +162,10 @@ std::vector<ConfigKey> buildSchema()
                           "With black_relative: black is V <= this x the carpet's median V (measured per frame on 1/8 of the "
                           "ring's pixels); higher takes in shadows and dark carpet, lower leaves dim robots non-black",
                           [](auto& c) -> auto& { return c.colors.blackVRatio; }));
+    s.push_back(doubleKey("colors.sample_outlier_percent", "%", 0.0, 25.0, false,
+                          "Colours tab sampling: share of a stroke's colours ignored at each end of H, S and V when a box grows "
+                          "to hold them (stray pixels at a ball's blurred rim); 0 covers every sample. Not used by the detector",
+                          [](auto& c) -> auto& { return c.colors.sampleOutlierPct; }));
 
     // geometry
     s.push_back(intKey("geometry.image_width", "px", 16, 4096, true, "Frame width this geometry belongs to; other frame sizes are refused",

@@ -117,6 +117,26 @@ private slots:
         QVERIFY(!res.notes.empty());
     }
 
+    // A second field class (a dark-green region the user sampled) keeps its box; the first field
+    // class gets the carpet; a note names the one kept.
+    void secondFieldClassIsKept()
+    {
+        const Scene s = drawScene(cv::Scalar(40, 140, 40), 1.0, 5);
+        ColorLutOptions start;
+        ColourClassDef dark;
+        dark.name = "dark_green";
+        dark.role = ColourRole::Field;
+        dark.boxes = {HsvRange{true, 50, 70, 80, 255, 20, 60}};
+        start.classes.push_back(dark);
+        const AutoColourResult res = autoColour({s.frame}, ring(), start);
+        QVERIFY(res.ok());
+        QCOMPARE(res.colors.classes.back(), dark);
+        QVERIFY(res.colors.classes[std::size_t(ColorClass::Green) - 1] != start.classes[std::size_t(ColorClass::Green) - 1]);
+        bool noted = false;
+        for (const std::string& n : res.notes) noted = noted || n.find("dark_green") != std::string::npos;
+        QVERIFY(noted);
+    }
+
     void refusesWhatHasNoCarpet()
     {
         const Geometry geometry = ring();

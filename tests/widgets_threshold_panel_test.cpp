@@ -181,11 +181,16 @@ void ThresholdPanelTest::editorsFollowSchema()
         break;
     }
     case ValueType::Text: {
-        // validation.ball_hint_class names a class of colors.classes, a list the schema's choices cannot hold.
+        // validation.ball_hint_class names a class of colors.classes, a list the schema's choices
+        // cannot hold: a combo box of "none" and the classes that are not field classes.
         QCOMPARE(key, QStringLiteral("validation.ball_hint_class"));
-        auto* line = qobject_cast<QLineEdit*>(w);
-        QVERIFY(line);
-        QCOMPARE(line->text(), qs(std::get<std::string>(value)));
+        auto* combo = qobject_cast<QComboBox*>(w);
+        QVERIFY(combo);
+        QCOMPARE(combo->currentData().toString(), qs(std::get<std::string>(value)));
+        QCOMPARE(combo->itemData(0).toString(), QStringLiteral("none"));
+        int notField = 0;
+        for (const ColourClassDef& c : doc_->config().colors.classes) notField += c.role != ColourRole::Field ? 1 : 0;
+        QCOMPARE(combo->count(), 1 + notField);
         break;
     }
     }

@@ -6,8 +6,12 @@
 #include "calib/colour/HsvImage.h"
 #include "core/Geometry.h"
 #include "widgets/ColourBoxEditor.h"
+#include "widgets/ColourClassList.h"
 #include "widgets/ColourPlaneView.h"
+#include "widgets/ColourProfilesBox.h"
 #include "widgets/ColourSampler.h"
+#include "widgets/ColourSamplingBox.h"
+#include "widgets/ColourSwatch.h"
 #include "widgets/ConfigDocument.h"
 #include "widgets/ImageView.h"
 #include "widgets/PipelineView.h"
@@ -15,7 +19,6 @@
 #include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -23,29 +26,14 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
-#include <QPainter>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSignalBlocker>
-#include <QSpinBox>
-#include <QToolButton>
 #include <QVBoxLayout>
 
 namespace omnitune {
 
 namespace {
-
-QColor toQColor(const std::array<std::uint8_t, 3>& bgr) { return QColor(bgr[2], bgr[1], bgr[0]); }
-
-QIcon swatch(const QColor& c)
-{
-    QPixmap p(14, 14);
-    p.fill(c);
-    QPainter painter(&p);
-    painter.setPen(Qt::black);
-    painter.drawRect(0, 0, 13, 13);
-    return QIcon(p);
-}
 
 QString boxLabel(int i, const HsvRange& b)
 {
@@ -65,26 +53,15 @@ ClassBoxes boxesOf(const ColourClasses& classes)
     return out;
 }
 
-// Shares of a few pixels (a ball) still show as a number.
-QString pctText(double pct) { return QString::number(pct, 'f', pct > 0 && pct < 1 ? 2 : 1) + QStringLiteral(" %"); }
-
-QPushButton* smallButton(const QString& text, const QString& tip, const QString& name, QWidget* parent)
-{
-    auto* b = new QPushButton(text, parent);
-    b->setToolTip(tip);
-    b->setObjectName(name);
-    return b;
-}
 
 }  // namespace
 
 ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* parent)
     : QWidget(parent), doc_(doc), view_(view), sampler_(new ColourSampler(doc, view, this)),
-      classList_(new QListWidget), boxList_(new QListWidget), boxEditor_(new ColourBoxEditor), plane_(new ColourPlaneView), name_(new QLineEdit),
+      classList_(new ColourClassList), boxList_(new QListWidget), boxEditor_(new ColourBoxEditor), plane_(new ColourPlaneView), name_(new QLineEdit),
       role_(new QComboBox), display_(new QPushButton), onlyThis_(new QCheckBox(tr("Show only this class"))),
       overlaps_(new QCheckBox(tr("Flag pixels two classes claim"))), sharesLabel_(new QLabel),
-      sampleButton_(new QToolButton), tool_(new QComboBox), radius_(new QSpinBox), tolH_(new QSpinBox),
-      tolS_(new QSpinBox), tolV_(new QSpinBox), outliers_(new QDoubleSpinBox)
+      profiles_(new ColourProfilesBox(doc))
 {
     auto* outer = new QVBoxLayout(this);
     outer->setContentsMargins(0, 0, 0, 0);
@@ -99,68 +76,8 @@ ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* par
     auto* layout = new QVBoxLayout(inner);
     layout->setContentsMargins(4, 4, 4, 4);
 
-    // Sampling on the panes.
-    auto* sampling = new QGroupBox(tr("Sampling on the panes"), inner);
-    auto* sl = new QFormLayout(sampling);
-    sampleButton_->setText(tr("Sample (C)"));
-    sampleButton_->setObjectName("sampleButton");
-    sampleButton_->setCheckable(true);
-    sampleButton_->setToolTip(tr("Left button on any pane: drag or click adds the pixels' colours to the selected "
-                                 "class's box; Ctrl removes them; Shift drags a rectangle; middle button pans"));
-    tool_->addItems({tr("Brush"), tr("Magic wand (W)")});
-    tool_->setObjectName("tool");
-    auto* toolRow = new QHBoxLayout;
-    toolRow->addWidget(sampleButton_);
-    toolRow->addWidget(tool_, 1);
-    sl->addRow(toolRow);
-    radius_->setRange(0, ColourSampler::kMaxBrushRadius);
-    radius_->setValue(sampler_->brushRadius());
-    radius_->setSuffix(tr(" px"));
-    radius_->setObjectName("brushRadius");
-    radius_->setToolTip(tr("Brush radius in image pixels ([ and ] change it); 0 samples single pixels"));
-    sl->addRow(tr("Brush radius"), radius_);
-    auto* tolRow = new QHBoxLayout;
-    const WandTolerance wand = sampler_->wandTolerance();
-    for (auto [box, value, top, tip] : {std::tuple{tolH_, wand.h, 90, tr("Hue steps (0..179 scale) a pixel may differ from the clicked one")},
-                                        std::tuple{tolS_, wand.s, 255, tr("Saturation steps a pixel may differ from the clicked one")},
-                                        std::tuple{tolV_, wand.v, 255, tr("Value steps a pixel may differ from the clicked one")}}) {
-        box->setRange(0, top);
-        box->setValue(value);
-        box->setToolTip(tip);
-        tolRow->addWidget(box);
-    }
-    sl->addRow(tr("Wand ± H S V"), tolRow);
-    outliers_->setRange(0.0, 25.0);
-    outliers_->setDecimals(1);
-    outliers_->setSingleStep(0.5);
-    outliers_->setSuffix(tr(" %"));
-    outliers_->setValue(sampler_->fitOptions().outlierPct);
-    outliers_->setObjectName("outlierPct");
-    outliers_->setToolTip(tr("Share of a stroke's samples ignored at each end of H, S and V (stray pixels at a ball's "
-                             "blurred edge); 0 covers every sample"));
-    sl->addRow(tr("Ignore outliers"), outliers_);
-    layout->addWidget(sampling);
-
-    // The classes in priority order.
-    auto* classesBox = new QGroupBox(tr("Classes (first in the list wins)"), inner);
-    auto* cl = new QVBoxLayout(classesBox);
-    classList_->setObjectName("classList");
-    classList_->setToolTip(tr("A pixel gets the first class whose boxes hold its colour; the tick switches a class "
-                              "on or off; the percentage is its share of the processed pixels of the frame on screen"));
-    cl->addWidget(classList_);
-    auto* classButtons = new QHBoxLayout;
-    QPushButton* add = smallButton(tr("Add"), tr("A new class at the end of the list; sample into it"), "addClass", classesBox);
-    QPushButton* remove = smallButton(tr("Remove"), tr("Remove the selected class"), "removeClass", classesBox);
-    QPushButton* up = smallButton(tr("Up"), tr("Higher priority: wins pixels it shares with the class above"), "classUp", classesBox);
-    QPushButton* down = smallButton(tr("Down"), tr("Lower priority"), "classDown", classesBox);
-    for (QPushButton* b : {add, remove, up, down}) classButtons->addWidget(b);
-    cl->addLayout(classButtons);
-    QPushButton* autoButton = smallButton(tr("Auto colours from this frame"),
-                                          tr("First guess: the dominant hue of the processed area is the carpet; black "
-                                             "and white relative to its brightness; one undo step"),
-                                          "autoColours", classesBox);
-    cl->addWidget(autoButton);
-    layout->addWidget(classesBox);
+    layout->addWidget(new ColourSamplingBox(doc_, sampler_, inner));
+    layout->addWidget(classList_);
 
     // The selected class.
     auto* classBox = new QGroupBox(tr("Selected class"), inner);
@@ -182,8 +99,8 @@ ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* par
                             "strokes grow the selected box"));
     form->addRow(boxList_);
     auto* boxButtons = new QHBoxLayout;
-    QPushButton* addBoxButton = smallButton(tr("Add box"), tr("A new box: the next stroke makes it"), "addBox", classBox);
-    QPushButton* removeBoxButton = smallButton(tr("Remove box"), tr("Remove the selected box (a class keeps one at least)"),
+    QPushButton* addBoxButton = colourTabButton(tr("Add box"), tr("A new box: the next stroke makes it"), "addBox", classBox);
+    QPushButton* removeBoxButton = colourTabButton(tr("Remove box"), tr("Remove the selected box (a class keeps one at least)"),
                                                "removeBox", classBox);
     boxButtons->addWidget(addBoxButton);
     boxButtons->addWidget(removeBoxButton);
@@ -211,31 +128,11 @@ ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* par
     vl->addWidget(overlaps_);
     vl->addWidget(sharesLabel_);
     layout->addWidget(viewBox);
+    layout->addWidget(profiles_);
     layout->addStretch(1);
 
-    connect(sampleButton_, &QToolButton::toggled, sampler_, &ColourSampler::setSampling);
-    connect(sampler_, &ColourSampler::samplingChanged, sampleButton_, &QToolButton::setChecked);
-    connect(tool_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
-            [this](int i) { sampler_->setTool(i == 1 ? ColourSampler::Tool::Wand : ColourSampler::Tool::Brush); });
-    connect(sampler_, &ColourSampler::toolChanged, this, [this](ColourSampler::Tool t) {
-        tool_->setCurrentIndex(t == ColourSampler::Tool::Wand ? 1 : 0);
-    });
-    connect(radius_, QOverload<int>::of(&QSpinBox::valueChanged), sampler_, &ColourSampler::setBrushRadius);
-    connect(sampler_, &ColourSampler::brushRadiusChanged, radius_, &QSpinBox::setValue);
-    for (QSpinBox* s : {tolH_, tolS_, tolV_})
-        connect(s, QOverload<int>::of(&QSpinBox::valueChanged), this, [this] {
-            WandTolerance t = sampler_->wandTolerance();
-            t.h = tolH_->value();
-            t.s = tolS_->value();
-            t.v = tolV_->value();
-            sampler_->setWandTolerance(t);
-        });
-    connect(outliers_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double pct) {
-        BoxFitOptions o = sampler_->fitOptions();
-        o.outlierPct = pct;
-        sampler_->setFitOptions(o);
-    });
     connect(sampler_, &ColourSampler::message, this, &ColourEditor::message);
+    connect(profiles_, &ColourProfilesBox::message, this, &ColourEditor::message);
     connect(sampler_, &ColourSampler::targetEdited, this, [this](int c, int box) {
         wantClass_ = c;
         wantBox_ = std::max(0, box);
@@ -245,11 +142,10 @@ ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* par
     auto report = [this](const std::optional<QString>& why) {
         if (why) emit message(*why);
     };
-    connect(add, &QPushButton::clicked, this, [this, report] { report(addClass()); });
-    connect(remove, &QPushButton::clicked, this, [this, report] { report(removeClass()); });
-    connect(up, &QPushButton::clicked, this, [this, report] { report(moveClass(-1)); });
-    connect(down, &QPushButton::clicked, this, [this, report] { report(moveClass(1)); });
-    connect(autoButton, &QPushButton::clicked, this, [this, report] { report(autoColours()); });
+    connect(classList_, &ColourClassList::addRequested, this, [this, report] { report(addClass()); });
+    connect(classList_, &ColourClassList::removeRequested, this, [this, report] { report(removeClass()); });
+    connect(classList_, &ColourClassList::moveRequested, this, [this, report](int delta) { report(moveClass(delta)); });
+    connect(classList_, &ColourClassList::autoRequested, this, [this, report] { report(autoColours()); });
     connect(addBoxButton, &QPushButton::clicked, this, [this, report] { report(addBox()); });
     connect(removeBoxButton, &QPushButton::clicked, this, [this, report] { report(removeBox()); });
     connect(name_, &QLineEdit::editingFinished, this, [this, report] {
@@ -267,16 +163,15 @@ ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* par
         const QColor c = QColorDialog::getColor(now, this, tr("Colour of the class on the segmented pane"));
         if (c.isValid()) report(setDisplayColour(c));
     });
-    connect(classList_, &QListWidget::currentRowChanged, this, [this](int row) {
-        if (refreshing_ || row < 0) return;
+    connect(classList_, &ColourClassList::currentChanged, this, [this](int row) {
+        if (refreshing_) return;
         wantClass_ = row;
         wantBox_ = 0;
         refresh();
         updateView();
     });
-    connect(classList_, &QListWidget::itemChanged, this, [this, report](QListWidgetItem* item) {
-        if (refreshing_) return;
-        report(setClassEnabled(classList_->row(item), item->checkState() == Qt::Checked));
+    connect(classList_, &ColourClassList::enabledChanged, this, [this, report](int row, bool on) {
+        if (!refreshing_) report(setClassEnabled(row, on));
     });
     connect(boxList_, &QListWidget::currentRowChanged, this, [this](int row) {
         if (refreshing_ || row < 0) return;
@@ -292,6 +187,8 @@ ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* par
     });
     refresh();
 }
+
+QListWidget* ColourEditor::classList() const { return classList_->list(); }
 
 const ColourClasses& ColourEditor::classes() const { return doc_->config().colors.classes; }
 
@@ -340,20 +237,7 @@ void ColourEditor::refresh()
     refreshing_ = true;
     const ColourClasses& cs = classes();
     const int c = currentClass();
-    {
-        const QSignalBlocker block(classList_);
-        classList_->clear();
-        for (const ColourClassDef& def : cs) {
-            auto* item = new QListWidgetItem(swatch(toQColor(def.display)), QString(), classList_);
-            item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
-            item->setCheckState(def.enabled ? Qt::Checked : Qt::Unchecked);
-        }
-        classList_->setCurrentRow(c);
-        // Every class in view without scrolling (at most 15): the tab scrolls instead.
-        if (classList_->count() > 0)
-            classList_->setMinimumHeight(classList_->count() * std::max(classList_->sizeHintForRow(0), fontMetrics().height() + 5) +
-                                         2 * classList_->frameWidth());
-    }
+    classList_->setClasses(cs, c);
     refreshShares();
     {
         const QSignalBlocker block(boxList_);
@@ -368,7 +252,7 @@ void ColourEditor::refresh()
         const ColourClassDef& def = cs[std::size_t(c)];
         if (!name_->hasFocus()) name_->setText(QString::fromStdString(def.name));
         role_->setCurrentIndex(int(std::find(kColourRoles.begin(), kColourRoles.end(), def.role) - kColourRoles.begin()));
-        display_->setIcon(swatch(toQColor(def.display)));
+        display_->setIcon(colourSwatch(toQColor(def.display)));
         display_->setText(toQColor(def.display).name());
     }
     const int b = currentBox();
@@ -383,19 +267,12 @@ void ColourEditor::refreshShares()
 {
     const ColourClasses& cs = classes();
     const bool have = shares_.processed > 0 && shares_.counts.size() == cs.size();
-    for (int i = 0; i < classList_->count() && i < int(cs.size()); ++i) {
-        const ColourClassDef& def = cs[std::size_t(i)];
-        QString text = QStringLiteral("%1  ·  %2").arg(QString::fromStdString(def.name),
-                                                      QString::fromUtf8(colourRoleName(def.role).data()));
-        if (have) text += QStringLiteral("  ·  ") + pctText(shares_.pct(shares_.counts[std::size_t(i)]));
-        const QSignalBlocker block(classList_);
-        classList_->item(i)->setText(text);
-    }
+    classList_->setShares(cs, have ? &shares_ : nullptr);
     sharesLabel_->setText(have ? tr("Frame %1: %2 of the processed pixels in no class,\n%3 claimed by two or more "
                                     "classes (%4 px)")
                                      .arg(run_ ? run_->frameIndex : -1)
-                                     .arg(pctText(shares_.pct(shares_.unclassified)))
-                                     .arg(pctText(shares_.pct(shares_.overlapCount)))
+                                     .arg(colourSharePct(shares_.pct(shares_.unclassified)))
+                                     .arg(colourSharePct(shares_.pct(shares_.overlapCount)))
                                      .arg(shares_.overlapCount)
                                : tr("Shares appear with a processed frame"));
 }
@@ -404,6 +281,7 @@ void ColourEditor::setRun(std::shared_ptr<const PipelineRun> run)
 {
     run_ = std::move(run);
     sampler_->setRun(run_);
+    profiles_->setRun(run_);
     analysed_ = false;
     if (isVisible()) analyse();
 }
@@ -530,7 +408,14 @@ std::optional<QString> ColourEditor::renameClass(const QString& name)
         return tr("\"%1\" cannot name a class: lower case a-z first, then a-z, 0-9 and _ (not \"unknown\" or \"none\")").arg(name);
     const int other = findColourClass(classes(), n);
     if (other >= 0 && other != currentClass()) return tr("A class named %1 exists already").arg(name);
-    return editClass(tr("Rename class to %1"), [&](ColourClassDef& d) { d.name = n; });
+    // The ball hint names the class by name: it follows the rename in the same undo step.
+    const int c = currentClass();
+    if (c < 0) return tr("No class selected");
+    Config next = doc_->config();
+    const std::string old = next.colors.classes[std::size_t(c)].name;
+    next.colors.classes[std::size_t(c)].name = n;
+    if (next.validation.ballHint == old) next.validation.ballHint = n;
+    return commit(next, tr("Rename class %1 to %2").arg(QString::fromStdString(old), name.trimmed()));
 }
 
 std::optional<QString> ColourEditor::setRole(ColourRole role)

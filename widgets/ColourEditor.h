@@ -6,8 +6,9 @@
 // the selected class's name, role, display colour and boxes, the box's H/S/V sliders, the
 // sampling tools (ColourSampler), the H-S plane with the boxes on it (ColourPlaneView) and the
 // views of the segmented pane: only the selected class, and the pixels two or more classes
-// claim striped. "Auto colours" is the automatic first
-// calibration (calib/colour/AutoColour) of the frame on screen, as one undo step.
+// claim striped. "Auto colours" is the automatic first calibration (calib/colour/AutoColour)
+// of the frame on screen, as one undo step. The pieces are their own widgets: ColourSamplingBox,
+// ColourClassList, ColourBoxEditor, ColourPlaneView and the venue profiles (ColourProfilesBox).
 // No vision here: shares, views, sampling and the calibration are calib/colour/ functions.
 #include "core/ColourClasses.h"
 #include "calib/colour/ClassShares.h"
@@ -20,19 +21,18 @@
 
 class QCheckBox;
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QListWidget;
 class QMenu;
 class QPushButton;
-class QSpinBox;
-class QToolButton;
 
 namespace omnitune {
 
 class ColourBoxEditor;
+class ColourClassList;
 class ColourPlaneView;
+class ColourProfilesBox;
 class ColourSampler;
 class ConfigDocument;
 class PipelineView;
@@ -71,11 +71,12 @@ public:
     // The shares of the last run shown (for tests and the list).
     const ClassShares& shares() const { return shares_; }
 
-    QListWidget* classList() const { return classList_; }
+    QListWidget* classList() const;
     QListWidget* boxList() const { return boxList_; }
     ColourBoxEditor* boxEditor() const { return boxEditor_; }
     ColourPlaneView* planeView() const { return plane_; }
     QLabel* sharesLabel() const { return sharesLabel_; }
+    ColourProfilesBox* profiles() const { return profiles_; }
 
 signals:
     void message(const QString& text);  // for the status bar
@@ -100,7 +101,7 @@ private:
     ConfigDocument* doc_;
     PipelineView* view_;
     ColourSampler* sampler_;
-    QListWidget* classList_;
+    ColourClassList* classList_;
     QListWidget* boxList_;
     ColourBoxEditor* boxEditor_;
     ColourPlaneView* plane_;
@@ -110,13 +111,7 @@ private:
     QCheckBox* onlyThis_;
     QCheckBox* overlaps_;
     QLabel* sharesLabel_;
-    QToolButton* sampleButton_;
-    QComboBox* tool_;
-    QSpinBox* radius_;
-    QSpinBox* tolH_;
-    QSpinBox* tolS_;
-    QSpinBox* tolV_;
-    QDoubleSpinBox* outliers_;
+    ColourProfilesBox* profiles_;
 
     std::shared_ptr<const PipelineRun> run_;
     cv::Mat runHsv_;  // run_'s frame in HSV, for the shares

@@ -63,6 +63,13 @@ void ColourSampler::setTarget(int classIndex, int box)
 
 void ColourSampler::setRun(std::shared_ptr<const PipelineRun> run) { run_ = std::move(run); }
 
+BoxFitOptions ColourSampler::fitOptions() const
+{
+    BoxFitOptions o;
+    o.outlierPct = doc_->config().colors.sampleOutlierPct;
+    return o;
+}
+
 void ColourSampler::setTool(Tool tool)
 {
     if (tool == tool_) return;
@@ -182,7 +189,7 @@ ColourSampler::StrokeEdit ColourSampler::edited() const
     }
     const int n = int(samples.hsv.size());
     if (remove_) {
-        const SampleEdit e = removeSamples(c.boxes, samples.hsv, fit_);
+        const SampleEdit e = removeSamples(c.boxes, samples.hsv, fitOptions());
         res.changed = e.changed;
         res.undoText = tr("Remove colours from %1").arg(name);
         res.summary = tr("%1: %n pixel(s) sampled", "", n).arg(name) + ignored +
@@ -191,7 +198,7 @@ ColourSampler::StrokeEdit ColourSampler::edited() const
         if (e.lastBoxOff) res.summary += tr("; nothing is left of the class: its box is off until you add colours");
         return res;
     }
-    const SampleEdit e = addSamples(c.boxes, box_, samples.hsv, fit_);
+    const SampleEdit e = addSamples(c.boxes, box_, samples.hsv, fitOptions());
     res.changed = e.changed;
     res.box = e.box;
     res.undoText = tr("Add colours to %1").arg(name);

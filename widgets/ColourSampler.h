@@ -55,8 +55,8 @@ public:
     void setBrushRadius(int px);
     const WandTolerance& wandTolerance() const { return wand_; }
     void setWandTolerance(const WandTolerance& tol) { wand_ = tol; }
-    const BoxFitOptions& fitOptions() const { return fit_; }
-    void setFitOptions(const BoxFitOptions& o) { fit_ = o; }
+    // The box fit of a stroke: outliers from the config (colors.sample_outlier_percent).
+    BoxFitOptions fitOptions() const;
 
     // The gestures, in image px (the panes' signals call these; tests may too).
     void press(QPointF p, Qt::KeyboardModifiers modifiers);
@@ -98,7 +98,6 @@ private:
     Tool tool_ = Tool::Brush;
     int radius_ = 3;
     WandTolerance wand_;
-    BoxFitOptions fit_;
 
     std::shared_ptr<const PipelineRun> run_;
 

@@ -1,5 +1,6 @@
 #include "widgets/ThresholdPanel.h"
 
+#include "core/ColourClasses.h"
 #include "widgets/ConfigDocument.h"
 
 #include <QCheckBox>
@@ -41,6 +42,8 @@ const Section kSections[] = {
     {"sensors", QT_TRANSLATE_NOOP("omnitune::ThresholdPanel", "Radial sensors (thesis fig. 4.3)")},
     {"algorithm", QT_TRANSLATE_NOOP("omnitune::ThresholdPanel", "Algorithm")},
 };
+
+const QString kBallHintKey = QStringLiteral("validation.ball_hint_class");
 
 QString qs(const std::string& s) { return QString::fromStdString(s); }
 
@@ -343,6 +346,16 @@ void ThresholdPanel::addEditor(const ConfigKey& k, QFormLayout* form, QGroupBox*
     }
     case ValueType::DoubleList:
     case ValueType::Text: {
+        if (key == kBallHintKey) {
+            // A class name: picked from the classes that may be the ball (syncEditor fills it).
+            auto* combo = new QComboBox;
+            combo->setProperty("colourClassNames", true);
+            connect(combo, qOverload<int>(&QComboBox::currentIndexChanged), this, [this, key, combo](int index) {
+                if (index >= 0) apply(key, combo->itemData(index).toString().toStdString());
+            });
+            editor = combo;
+            break;
+        }
         auto* line = new QLineEdit;
         if (k.type == ValueType::DoubleList) {
             const QString example = formatList(std::get<std::vector<double>>(k.get(Config{})));
@@ -457,6 +470,8 @@ void ThresholdPanel::onDocumentChanged(const QString& key)
     } else if (editors_.contains(key)) {
         syncEditor(key);
     }
+    // The ball hint's choices are the class names: any change may have renamed or removed one.
+    if (!key.isEmpty() && key != kBallHintKey && editors_.contains(kBallHintKey)) syncEditor(kBallHintKey);
 }
 
 void ThresholdPanel::syncEditor(const QString& key)
@@ -473,6 +488,8 @@ void ThresholdPanel::syncEditor(const QString& key)
         dspin->setValue(std::get<double>(value));
     } else if (auto* check = qobject_cast<QCheckBox*>(editor)) {
         check->setChecked(std::get<bool>(value));
+    } else if (auto* combo = qobject_cast<QComboBox*>(editor); combo && combo->property("colourClassNames").toBool()) {
+        fillClassNames(combo, std::get<std::string>(value));
     } else if (auto* combo = qobject_cast<QComboBox*>(editor)) {
         combo->setCurrentIndex(combo->findData(qs(std::get<std::string>(value))));
     } else if (auto* line = qobject_cast<QLineEdit*>(editor)) {
@@ -482,6 +499,20 @@ void ThresholdPanel::syncEditor(const QString& key)
             line->setText(qs(std::get<std::string>(value)));
         setInvalid(line, false);
     }
+}
+
+void ThresholdPanel::fillClassNames(QComboBox* combo, const std::string& current)
+{
+    combo->clear();
+    combo->addItem(tr("none (no hint)"), QStringLiteral("none"));
+    bool found = current == "none";
+    for (const ColourClassDef& c : doc_->config().colors.classes) {
+        if (c.role == ColourRole::Field) continue;  // the ball is never carpet (checkConfig)
+        combo->addItem(QStringLiteral("%1 (%2)").arg(qs(c.name), qs(std::string(colourRoleName(c.role)))), qs(c.name));
+        found = found || c.name == current;
+    }
+    if (!found) combo->addItem(tr("%1 (no such class)").arg(qs(current)), qs(current));
+    combo->setCurrentIndex(combo->findData(qs(current)));
 }
 
 void ThresholdPanel::setInvalid(QWidget* editor, bool invalid)

@@ -14,6 +14,7 @@
 #include <QString>
 #include <QWidget>
 
+class QComboBox;
 class QFormLayout;
 class QGroupBox;
 class QLabel;
@@ -58,6 +59,8 @@ private:
     void onDocumentChanged(const QString& key);
     void syncEditor(const QString& key);
     void setInvalid(QWidget* editor, bool invalid);
+    // validation.ball_hint_class's choices: none and every class that is not a field class.
+    void fillClassNames(QComboBox* combo, const std::string& current);
     void setStatus(const QString& message);
 
     ConfigDocument* doc_;

@@ -154,6 +154,12 @@ AutoColourResult autoColour(const std::vector<cv::Mat>& frames, const Geometry& 
     field.enabled = true;
     field.boxes = {HsvRange{true, wrapHue(peak + hLo), wrapHue(peak + hHi), std::min(sMin, 250), 255, blackV + 1, 255}};
     const HsvRange green = field.boxes.front();
+    // One dominant hue says nothing about a second carpet region: the other enabled field classes
+    // keep their boxes (the user sampled them on purpose), and the note says so.
+    for (const ColourClassDef& c : res.colors.classes)
+        if (&c != &field && c.enabled && c.role == ColourRole::Field)
+            res.notes.push_back("field class " + c.name + " kept as it was (one carpet hue was found, set in " + field.name +
+                                "): sample the other carpet region into it");
 
     // Black: dark relative to the carpet, any hue.
     res.colors.blackRelative = true;

@@ -2,6 +2,8 @@
 
 #include "core/YamlText.h"
 
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 #include <array>
 #include <sstream>
@@ -95,6 +97,18 @@ ClassChanges classChanges(const cv::Mat& frame, PixelFormat format, const Geomet
             }
         }
     }
+    return out;
+}
+
+cv::Mat classChangeImage(const cv::Mat& bgr, const cv::Mat& changed, double dim, int markRadius)
+{
+    CV_Assert(bgr.type() == CV_8UC3 && changed.type() == CV_8UC1 && bgr.size() == changed.size());
+    cv::Mat out;
+    bgr.convertTo(out, -1, dim);
+    cv::Mat marks = changed;
+    if (markRadius > 0)
+        cv::dilate(changed, marks, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * markRadius + 1, 2 * markRadius + 1)));
+    out.setTo(cv::Scalar(255, 0, 255), marks);
     return out;
 }
 

@@ -43,4 +43,9 @@ struct ClassChanges {
 ClassChanges classChanges(const cv::Mat& frame, PixelFormat format, const Geometry& geometry,
                           const ColorLutOptions& left, const ColorLutOptions& right);
 
+// The changes for the eye: `bgr` (the frame, CV_8UC3) dimmed to `dim` of its brightness, the
+// pixels of `changed` (CV_8UC1, 255 = changes class) in magenta over it, each drawn as a disc of
+// `markRadius` px so that thin changes (a box edge along the lines) survive a scaled-down view.
+cv::Mat classChangeImage(const cv::Mat& bgr, const cv::Mat& changed, double dim = 0.35, int markRadius = 0);
+
 }  // namespace omnitune
