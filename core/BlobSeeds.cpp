@@ -1,39 +1,100 @@
 #include "core/BlobSeeds.h"
 
 #include "core/BallModel.h"
+#include "core/FillBytes.h"
 #include "core/Geometry.h"
-
-#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 namespace omnitune {
 
+BlobSeeds::Region BlobSeeds::flood(const cv::Mat& binary, int start)
+{
+    // Breadth-first over a queue that holds every pixel of the region once: queue_ has room for
+    // the whole image, so it never grows.
+    const int w = binary.cols;
+    const int h = binary.rows;
+    std::uint8_t* seen = seen_.ptr<std::uint8_t>(0);
+    const std::uint8_t* bin = binary.ptr<std::uint8_t>(0);
+    Region r;
+    r.x0 = r.x1 = start % w;
+    r.y0 = r.y1 = start / w;
+    double sx = 0;
+    double sy = 0;
+    std::size_t head = 0;
+    std::size_t tail = 0;
+    queue_[tail++] = start;
+    seen[start] = 1;
+    while (head < tail) {
+        const int p = queue_[head++];
+        const int x = p % w;
+        const int y = p / w;
+        ++r.area;
+        sx += x;
+        sy += y;
+        r.x0 = std::min(r.x0, x);
+        r.x1 = std::max(r.x1, x);
+        r.y0 = std::min(r.y0, y);
+        r.y1 = std::max(r.y1, y);
+        for (int dy = -1; dy <= 1; ++dy) {
+            const int ny = y + dy;
+            if (ny < 0 || ny >= h) continue;
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int nx = x + dx;
+                if (nx < 0 || nx >= w) continue;
+                const int q = ny * w + nx;
+                if (seen[q] || bin[q] == 255) continue;
+                seen[q] = 1;
+                queue_[tail++] = q;
+            }
+        }
+    }
+    r.cx = sx / r.area;
+    r.cy = sy / r.area;
+    return r;
+}
+
+void BlobSeeds::keep(const BlobSeed& seed, int maxSeeds)
+{
+    if (int(seeds_.size()) >= maxSeeds && !(seed.fit < seeds_.back().fit)) return;
+    auto at = std::upper_bound(seeds_.begin(), seeds_.end(), seed.fit,
+                               [](double fit, const BlobSeed& s) { return fit < s.fit; });
+    if (int(seeds_.size()) >= maxSeeds) seeds_.pop_back();  // `at` stays valid: it is not past the end
+    seeds_.insert(at, seed);
+}
+
 const std::vector<BlobSeed>& BlobSeeds::find(const cv::Mat& binary, const Geometry& geometry, const BallModel& ball,
                                              int maxSeeds)
 {
-    CV_Assert(binary.type() == CV_8UC1 && binary.size() == geometry.imageSize());
+    CV_Assert(binary.type() == CV_8UC1 && binary.size() == geometry.imageSize() && binary.isContinuous());
+    maxSeeds = std::max(0, maxSeeds);
     seeds_.clear();
-    cv::bitwise_not(binary, nonGreen_);  // 255 = non-green and processed
-    const int n = cv::connectedComponentsWithStats(nonGreen_, labels_, stats_, centroids_, 8, CV_32S);
-    for (int i = 1; i < n; ++i) {
-        const int* st = stats_.ptr<int>(i);
-        const int area = st[cv::CC_STAT_AREA];
-        if (area < 4) continue;  // pixel speckle, never a ball we could validate
-        const int x = int(std::lround(centroids_.at<double>(i, 0)));
-        const int y = int(std::lround(centroids_.at<double>(i, 1)));
-        if (x < 0 || y < 0 || x >= binary.cols || y >= binary.rows || !geometry.isUsed(x, y)) continue;
-        const double r = ball.radiusAt(geometry.distanceAt(x, y));
-        const double ratio = area / (M_PI * r * r);
-        if (ratio < kMinAreaRatio || ratio > kMaxAreaRatio) continue;
-        // Compact: no side longer than the ball (plus a pixel of blur either side).
-        const double side = 2.0 * r + 2.0;
-        if (st[cv::CC_STAT_WIDTH] > side || st[cv::CC_STAT_HEIGHT] > side) continue;
-        seeds_.push_back(BlobSeed{x, y, std::abs(std::log(ratio))});
+    if (seeds_.capacity() < std::size_t(maxSeeds) + 1) seeds_.reserve(std::size_t(maxSeeds) + 1);
+    if (maxSeeds == 0) return seeds_;
+    seen_.create(binary.size(), CV_8UC1);
+    fillBytes(seen_, 0);
+    queue_.resize(binary.total());
+    // Only processed pixels start a region (unprocessed ones are 255 in `binary` anyway).
+    for (const RowSpan& s : geometry.spans()) {
+        const std::uint8_t* bin = binary.ptr<std::uint8_t>(s.y);
+        const std::uint8_t* seen = seen_.ptr<std::uint8_t>(s.y);
+        for (int x = s.x0; x < s.x1; ++x) {
+            if (bin[x] == 255 || seen[x]) continue;
+            const Region r = flood(binary, s.y * binary.cols + x);
+            if (r.area < 4) continue;  // pixel speckle, never a ball we could validate
+            const int cx = int(std::lround(r.cx));
+            const int cy = int(std::lround(r.cy));
+            if (!geometry.isUsed(cx, cy)) continue;
+            const double radius = ball.radiusAt(geometry.distanceAt(cx, cy));
+            const double ratio = r.area / (M_PI * radius * radius);
+            if (ratio < kMinAreaRatio || ratio > kMaxAreaRatio) continue;
+            // Compact: no side longer than the ball (plus a pixel of blur either side).
+            const double side = 2.0 * radius + 2.0;
+            if (r.x1 - r.x0 + 1 > side || r.y1 - r.y0 + 1 > side) continue;
+            keep(BlobSeed{cx, cy, std::abs(std::log(ratio))}, maxSeeds);
+        }
     }
-    std::stable_sort(seeds_.begin(), seeds_.end(), [](const BlobSeed& a, const BlobSeed& b) { return a.fit < b.fit; });
-    if (int(seeds_.size()) > maxSeeds) seeds_.resize(std::size_t(std::max(0, maxSeeds)));
     return seeds_;
 }
 

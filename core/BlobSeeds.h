@@ -19,10 +19,12 @@ struct BlobSeed {
 
 class BlobSeeds {
 public:
-    // The seeds of `binary` (CV_8UC1, 0 = non-green and processed): 8-connected regions whose
-    // pixel count is kMinAreaRatio..kMaxAreaRatio of the ball's disc at their centroid's
-    // distance and whose bounding box is no larger than the ball; best fitting first, at most
-    // maxSeeds. The result lives until the next call.
+    // The seeds of `binary` (CV_8UC1, 255 = green or not processed, anything else a non-green
+    // processed pixel): 8-connected regions whose pixel count is kMinAreaRatio..kMaxAreaRatio of
+    // the ball's disc at their centroid's distance and whose bounding box is no larger than the
+    // ball; best fitting first (ties: in raster order of their first pixel), at most maxSeeds.
+    // The result lives until the next call. Its buffers are kept: once warm (same image size,
+    // maxSeeds no larger) a call allocates nothing.
     const std::vector<BlobSeed>& find(const cv::Mat& binary, const Geometry& geometry, const BallModel& ball, int maxSeeds);
 
     // A ball partly behind a rod or the robot still counts; a line piece or a robot is larger.
@@ -30,10 +32,18 @@ public:
     static constexpr double kMaxAreaRatio = 1.6;
 
 private:
-    cv::Mat nonGreen_;
-    cv::Mat labels_;
-    cv::Mat stats_;
-    cv::Mat centroids_;
+    // One region, flooded from its first pixel (`start`, a linear offset) and marked in seen_.
+    struct Region {
+        int area = 0;
+        int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // bounding box, inclusive
+        double cx = 0, cy = 0;               // centroid
+    };
+    Region flood(const cv::Mat& binary, int start);
+    // Keeps `seed` among the best maxSeeds (sorted by fit, stable).
+    void keep(const BlobSeed& seed, int maxSeeds);
+
+    cv::Mat seen_;             // CV_8UC1: 1 once a pixel belongs to a flooded region
+    std::vector<int> queue_;   // linear offsets of the region being flooded (sized to the image)
     std::vector<BlobSeed> seeds_;
 };
 

@@ -285,6 +285,10 @@ std::vector<ConfigKey> buildSchema()
                         "Also seed candidates at compact non-green blobs whose size matches the ball's at their distance (found "
                         "even when clutter out-votes the ball)",
                         [](auto& c) -> auto& { return c.hough.blobSeeds; }));
+    s.push_back(boolKey("hough.masked_centres", false,
+                        "Edge pixels also vote for centres on masked pixels inside the ring (a ball behind a support rod), "
+                        "judged on their visible part; off: only processed non-green centres (the thesis)",
+                        [](auto& c) -> auto& { return c.hough.maskedCentres; }));
     s.push_back(boolKey("hough.rank_by_score", false,
                         "Choose among valid candidates by one score combining every validation test and the votes; 0: the "
                         "thesis' best circularity, then most votes",

@@ -38,18 +38,29 @@ SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry
 
     const cv::Size size = geometry.imageSize();
     weight_.create(size, CV_8UC1);
+    maskedWeight_.create(size, CV_8UC1);
     areaIndex_.create(size, CV_8UC1);
+    const double inner = geometry.options().innerRadius;
+    const double outer = geometry.options().outerRadius;
     for (int y = 0; y < size.height; ++y) {
-        for (int x = 0; x < size.width; ++x) {
-            const double d = geometry.distanceAt(x, y);
-            const bool used = geometry.isUsed(x, y);
-            weight_.at<std::uint8_t>(y, x) =
-                used ? std::uint8_t(d < options.nearRobotRadius ? options.nearRobotWeight : 1) : 0;
-            std::uint8_t area = 255;
-            if (used) {
-                area = std::uint8_t(options.multipleMaxima ? areaOf(d) : 0);
+        int spanStart = -1;
+        for (int x = 0; x <= size.width; ++x) {
+            bool centre = false;
+            if (x < size.width) {
+                const double d = geometry.distanceAt(x, y);
+                const bool used = geometry.isUsed(x, y);
+                const bool masked = options.maskedCentres && !used && d >= inner && d <= outer;
+                const auto w = std::uint8_t(d < options.nearRobotRadius ? options.nearRobotWeight : 1);
+                weight_.at<std::uint8_t>(y, x) = used ? w : 0;
+                maskedWeight_.at<std::uint8_t>(y, x) = masked ? w : 0;
+                centre = used || masked;
+                areaIndex_.at<std::uint8_t>(y, x) = centre ? std::uint8_t(options.multipleMaxima ? areaOf(d) : 0) : 255;
             }
-            areaIndex_.at<std::uint8_t>(y, x) = area;
+            if (centre && spanStart < 0) spanStart = x;
+            if (!centre && spanStart >= 0) {
+                centreSpans_.push_back({y, spanStart, x});
+                spanStart = -1;
+            }
         }
     }
     accumulator_ = cv::Mat::zeros(size, CV_16UC1);
@@ -131,7 +142,8 @@ void SpecificHough::vote(const cv::Mat& edges, const cv::Mat& binary)
     int voting = 0;
 
     // Votes: every edge pixel adds its weight on its locus, at centres that are processed and
-    // not green (binary 0): weight & ~binary is the weight where binary is 0, else 0.
+    // not green (binary 0): weight & ~binary is the weight where binary is 0, else 0; and at
+    // masked centres inside the ring (maskedCentres), whose colour is unknown.
     const double cx0 = geometry_->options().centerX;
     const double cy0 = geometry_->options().centerY;
     fillBytes(accumulator_, 0);
@@ -161,7 +173,10 @@ void SpecificHough::vote(const cv::Mat& edges, const cv::Mat& binary)
                 const int cx = x + dx;
                 const int cy = s.y + dy;
                 if (unsigned(cx) >= unsigned(w) || unsigned(cy) >= unsigned(h)) continue;
-                const std::uint8_t vote = weight_.ptr<std::uint8_t>(cy)[cx] & std::uint8_t(~binary.ptr<std::uint8_t>(cy)[cx]);
+                // A masked centre has binary 255 and weight 0; its vote comes from maskedWeight_.
+                const std::uint8_t vote = std::uint8_t(
+                    (weight_.ptr<std::uint8_t>(cy)[cx] & std::uint8_t(~binary.ptr<std::uint8_t>(cy)[cx])) |
+                    maskedWeight_.ptr<std::uint8_t>(cy)[cx]);
                 accumulator_.ptr<std::uint16_t>(cy)[cx] += vote;
             }
         }
@@ -212,7 +227,7 @@ void SpecificHough::findMaxima(int cap)
         // The thesis: the absolute maximum of each radial area (or of the ring).
         std::vector<Peak>& top = kept_;
         top.assign(std::size_t(areaCount()), Peak{0, 0, 0, 0});
-        for (const RowSpan& s : geometry_->spans()) {
+        for (const RowSpan& s : centreSpans_) {
             const std::int32_t* sum = sums_.ptr<std::int32_t>(s.y);
             const std::uint8_t* area = areaIndex_.ptr<std::uint8_t>(s.y);
             for (int x = s.x0; x < s.x1; ++x) {
@@ -235,7 +250,7 @@ void SpecificHough::findMaxima(int cap)
     for (auto& p : peaks_) p.clear();
     const int w = sums_.cols;
     const int h = sums_.rows;
-    for (const RowSpan& s : geometry_->spans()) {
+    for (const RowSpan& s : centreSpans_) {
         if (s.y < 1 || s.y >= h - 1) continue;
         const std::int32_t* up = sums_.ptr<std::int32_t>(s.y - 1);
         const std::int32_t* mid = sums_.ptr<std::int32_t>(s.y);

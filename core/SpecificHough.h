@@ -11,6 +11,7 @@
 // 80 px from the centre with the default model. `radiusAtCentre = false` restores it.
 #include "core/BallCandidate.h"
 #include "core/BlobSeeds.h"
+#include "core/Geometry.h"
 
 #include <opencv2/core.hpp>
 
@@ -19,7 +20,6 @@
 
 namespace omnitune {
 
-class Geometry;
 class BallModel;
 
 struct SpecificHoughOptions {
@@ -41,7 +41,11 @@ struct SpecificHoughOptions {
     // (0: no cap). A clean frame has 1-3 thousand; noise and dim speckle reach tens of thousands.
     int maxEdgePixels = 6000;
     // Seeds from connected non-green blobs whose area matches the ball's at their distance.
-    bool blobSeeds = false;
+    bool blobSeeds = true;
+    // Centres may lie on masked pixels inside the ring (a ball behind a support rod): edge pixels
+    // vote for them too, and their maxima become candidates, validated on the visible part
+    // (masked pixels are unknown there). Off (the thesis): only processed non-green centres.
+    bool maskedCentres = true;
     // Choose among valid candidates by the combined score (CandidateScore.h); false: the
     // thesis' best circularity, then most votes.
     bool rankByScore = true;
@@ -96,7 +100,9 @@ private:
     const Geometry* geometry_ = nullptr;
     const BallModel* ball_ = nullptr;
     std::vector<std::vector<LocusPoint>> loci_;  // by the edge pixel's rounded distance
-    cv::Mat weight_;    // CV_8UC1 votes a centre gets: 0 outside the processed ring
+    cv::Mat weight_;    // CV_8UC1 votes a processed non-green centre gets: 0 outside the processed ring
+    cv::Mat maskedWeight_;  // CV_8UC1 votes a masked centre inside the ring gets (maskedCentres), else 0
+    std::vector<RowSpan> centreSpans_;  // where a centre may lie: processed, or masked in the ring
     cv::Mat areaIndex_; // CV_8UC1 radial area of each pixel, 255 = none
     cv::Mat accumulator_;
     cv::Mat sums_;

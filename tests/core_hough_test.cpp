@@ -67,6 +67,7 @@ private slots:
     {
         Config c;
         c.hough.multipleMaxima = false;
+        c.hough.blobSeeds = false;  // the maxima alone (each ball is also a blob seed)
         cv::Mat frame = greenField(c);
         drawBall(frame, c, 100, 0);
         drawBall(frame, c, 200, 180);

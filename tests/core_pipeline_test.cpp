@@ -100,6 +100,7 @@ private slots:
         for (const auto& cand : r.candidates) QCOMPARE(cand.source, CandidateSource::SpecificHough);
 
         c.hough.minAccumulator = 100000;  // the specific path finds nothing now
+        c.hough.blobSeeds = false;        // (the blob seeds would still find the ball)
         Pipeline(c).process(frame, PixelFormat::Bgr8, r);
         QVERIFY(r.detection.found);
         QCOMPARE(r.candidates[std::size_t(r.detection.candidate)].source, CandidateSource::OpenCvHough);
@@ -222,6 +223,8 @@ private slots:
     {
         Config c;
         c.algorithm = Algorithm::Specific;
+        c.hough.blobSeeds = true;     // its regions' buffers are kept too
+        c.hough.maskedCentres = true;
         cv::Mat frame = greenField(c);
         drawBall(frame, c, 150, 0);
         cv::Mat other = greenField(c);
