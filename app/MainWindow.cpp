@@ -350,9 +350,9 @@ void MainWindow::buildMenus()
                                         paneEditors_->distances(), colours_, [this](QWidget* w) { showPanel(w); },
                                         [this] { return saveConfig(); }});
     camera->addSeparator();
-    setUpCameraAction_ = camera->addAction(tr("&Set up this camera (centre, rim, body, mask)"), cameraSetup_, &CameraSetup::setUp);
+    setUpCameraAction_ = camera->addAction(tr("&Set up this camera (guided: rim, body, mask, ball, distances, colours)..."), cameraSetup_, &CameraSetup::setUp);
     setUpCameraAction_->setObjectName("setUpCamera");
-    setUpCameraAction_->setStatusTip(tr("Fit the mirror centre, rim and robot body and propose a mask from frames of the open source"));
+    setUpCameraAction_->setStatusTip(tr("A step-by-step strip above the panes: centre and rim, robot body, mask, ball model, distance map, colours, save; each step skippable and undoable"));
     setUpCameraAction_->setEnabled(false);  // until a source is open
 
     QMenu* session = menuBar()->addMenu(tr("&Session"));

@@ -81,11 +81,11 @@ private slots:
         const int steps = doc->undoStack()->count();
         // Where the drags end, as the pane reports them (whole widget px): the radii follow to
         // within the half-pixel snap.
-        QPointF end = drag(pane, c + QPointF(s.outerRadius, 0), c + QPointF(s.outerRadius - 30, 0)).second;
+        QPointF end = dragOnPane(pane, c + QPointF(s.outerRadius, 0), c + QPointF(s.outerRadius - 30, 0)).second;
         QVERIFY2(std::abs(doc->config().sensors.outerRadius - radius(end)) <= 0.25,
                  qPrintable(QString("%1 vs %2").arg(doc->config().sensors.outerRadius).arg(radius(end))));
         QVERIFY(doc->config().sensors.outerRadius < before.sensors.outerRadius - 25);
-        end = drag(pane, c + QPointF(s.innerRadius, 0), c + QPointF(s.innerRadius + 20, 0)).second;
+        end = dragOnPane(pane, c + QPointF(s.innerRadius, 0), c + QPointF(s.innerRadius + 20, 0)).second;
         QVERIFY2(std::abs(doc->config().sensors.innerRadius - radius(end)) <= 0.25,
                  qPrintable(QString("%1 vs %2").arg(doc->config().sensors.innerRadius).arg(radius(end))));
         QVERIFY(doc->config().sensors.innerRadius > before.sensors.innerRadius + 15);
@@ -94,7 +94,7 @@ private slots:
         // Grabbed in the middle and moved about 5 degrees counter-clockwise, every ray turns with it.
         const double mid = (doc->config().sensors.innerRadius + doc->config().sensors.outerRadius) / 2;
         const double a = 5.0 * M_PI / 180.0;
-        const auto [from, to] = drag(pane, c + QPointF(mid, 0), c + mid * QPointF(std::cos(a), -std::sin(a)));
+        const auto [from, to] = dragOnPane(pane, c + QPointF(mid, 0), c + mid * QPointF(std::cos(a), -std::sin(a)));
         const double turned = doc->config().sensors.angleOffsetDeg;
         QVERIFY2(std::abs(turned - (degrees(to) - degrees(from))) <= 0.06,
                  qPrintable(QString("%1 vs %2").arg(turned).arg(degrees(to) - degrees(from))));
@@ -104,7 +104,7 @@ private slots:
 
         // A press beyond the rays' ends does nothing.
         const double beyond = doc->config().sensors.outerRadius + 40;
-        drag(pane, c + QPointF(-beyond, 0), c + QPointF(-beyond, 30));
+        dragOnPane(pane, c + QPointF(-beyond, 0), c + QPointF(-beyond, 30));
         QCOMPARE(doc->undoStack()->count(), steps + 3);
 
         for (int i = 0; i < 3; ++i) doc->undoStack()->undo();
@@ -174,16 +174,6 @@ private slots:
 private:
     RadialSensorEditor* editor() const { return window_->paneEditors()->sensors(); }
     RayStrip* strip() const { return window_->findChild<RayStrip*>(); }
-    // Drags with the left button; returns the image points the pane reported for press and release.
-    static std::pair<QPointF, QPointF> drag(ImageView* pane, QPointF from, QPointF to)
-    {
-        const QPoint a = pane->toWidget(from).toPoint(), b = pane->toWidget(to).toPoint();
-        QTest::mousePress(pane, Qt::LeftButton, {}, a);
-        QTest::mouseMove(pane, (a + b) / 2);
-        QTest::mouseMove(pane, b);
-        QTest::mouseRelease(pane, Qt::LeftButton, {}, b);
-        return {pane->toImage(QPointF(a)), pane->toImage(QPointF(b))};
-    }
 
     QTemporaryDir dir_;
     std::unique_ptr<MainWindow> window_;
