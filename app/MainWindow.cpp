@@ -307,33 +307,18 @@ void MainWindow::buildMenus()
     geometryEditor_ = new GeometryEditor(&doc_, view_, this);
     geometryEditor_->fillMenu(camera);
     connect(geometryEditor_, &GeometryEditor::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
-    // The left button belongs to one of them: marking truth or dragging the geometry.
-    connect(geometryEditor_, &GeometryEditor::editingChanged, this, [this](bool on) {
-        if (on && marker_->isMarking()) marker_->setMarking(false);
-    });
-    connect(marker_, &TruthMarker::markingChanged, this, [this](bool on) {
-        if (on) geometryEditor_->setEditing(false);
-        if (on) colours_->sampler()->setSampling(false);
-    });
-    // Colour sampling takes the left button too: one of the three at a time.
     colours_->fillMenu(menuBar()->addMenu(tr("C&olours")));
-    connect(colours_->sampler(), &ColourSampler::samplingChanged, this, [this](bool on) {
-        if (!on) return;
-        if (marker_->isMarking()) marker_->setMarking(false);
-        geometryEditor_->setEditing(false);
-        if (auto* dock = findChild<QDockWidget*>("colours")) dock->raise();  // sampling goes to the class selected there
-    });
-    connect(geometryEditor_, &GeometryEditor::editingChanged, colours_->sampler(), [this](bool on) {
-        if (on) colours_->sampler()->setSampling(false);
-    });
-    // The mask and the radial sensors; one editor holds the left button at a time.
+    // The pane editors, the geometry editor, truth marking and colour sampling: one of them holds
+    // the left button at a time (PaneEditors arbitrates; sampling lets go of it and takes it).
     paneEditors_ = new PaneEditors(&doc_, view_, geometryEditor_, marker_, rayStrip_, this);
     paneEditors_->fillMenu(camera);
     addToolBar(Qt::TopToolBarArea, paneEditors_->mask()->toolBar());
     connect(paneEditors_, &PaneEditors::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     connect(paneEditors_, &PaneEditors::leftButtonTaken, colours_->sampler(), [this] { colours_->sampler()->setSampling(false); });
-    connect(colours_->sampler(), &ColourSampler::samplingChanged, paneEditors_, [this](bool on) {
-        if (on) paneEditors_->releaseLeftButton();
+    connect(colours_->sampler(), &ColourSampler::samplingChanged, this, [this](bool on) {
+        if (!on) return;
+        paneEditors_->releaseLeftButton();
+        if (auto* dock = findChild<QDockWidget*>("colours")) dock->raise();  // sampling goes to the class selected there
     });
     paneEditors_->distances()->hide();
     camera->addAction(tr("&Distance map points and fit..."), this, [this] { showPanel(paneEditors_->distances()); })

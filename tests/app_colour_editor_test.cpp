@@ -12,6 +12,7 @@
 #include "widgets/ColourEditor.h"
 #include "widgets/ColourPlaneView.h"
 #include "widgets/ColourSampler.h"
+#include "widgets/GeometryEditor.h"
 #include "widgets/MaskEditor.h"
 #include "widgets/PaneEditors.h"
 #include "widgets/RadialSensorEditor.h"
@@ -245,6 +246,14 @@ private slots:
         editor()->sampler()->setSampling(true);
         QVERIFY(!mask->isEditing());
         window_->paneEditors()->sensors()->setEditing(true);
+        QVERIFY(!editor()->sampler()->isSampling());
+        // The geometry editor takes part in the same hand-over.
+        GeometryEditor* geometry = window_->geometryEditor();
+        geometry->setEditing(true);
+        QVERIFY(!window_->paneEditors()->sensors()->isEditing());
+        editor()->sampler()->setSampling(true);
+        QVERIFY(!geometry->isEditing());
+        geometry->setEditing(true);
         QVERIFY(!editor()->sampler()->isSampling());
     }
 

@@ -35,21 +35,20 @@ PaneEditors::PaneEditors(ConfigDocument* doc, PipelineView* view, GeometryEditor
 void PaneEditors::exclusive(const QObject* from, bool on)
 {
     if (!on) return;
-    if (from != mask_) mask_->setEditing(false);
-    if (from != sensors_) sensors_->setEditing(false);
-    if (from != distances_) distances_->setAdding(false);
-    if (from != references_) references_->setEditing(false);
-    if (from != geometry_) geometry_->setEditing(false);
-    if (from != marker_ && marker_->isMarking()) marker_->setMarking(false);
+    releaseAllBut(from);
     emit leftButtonTaken();
 }
 
-void PaneEditors::releaseLeftButton()
+void PaneEditors::releaseLeftButton() { releaseAllBut(nullptr); }
+
+void PaneEditors::releaseAllBut(const QObject* keep)
 {
-    mask_->setEditing(false);
-    sensors_->setEditing(false);
-    distances_->setAdding(false);
-    references_->setEditing(false);
+    if (keep != mask_) mask_->setEditing(false);
+    if (keep != sensors_) sensors_->setEditing(false);
+    if (keep != distances_) distances_->setAdding(false);
+    if (keep != references_) references_->setEditing(false);
+    if (keep != geometry_) geometry_->setEditing(false);
+    if (keep != marker_ && marker_->isMarking()) marker_->setMarking(false);
 }
 
 void PaneEditors::fillMenu(QMenu* camera)

@@ -44,8 +44,8 @@ public:
     void stopEditing();
     // Escape: an open polygon is dropped, then the editing ends.
     void escape();
-    // Mask, sensor, distance and reference-region editing off, because another holder (colour sampling) takes
-    // the left button.
+    // Every holder here lets go (mask, sensors, distances, reference regions, geometry, truth
+    // marking), because one outside (colour sampling) takes the left button.
     void releaseLeftButton();
 
 signals:
@@ -57,6 +57,7 @@ signals:
 private:
     // `on` from one holder of the left button turns every other one off.
     void exclusive(const QObject* from, bool on);
+    void releaseAllBut(const QObject* keep);
 
     ConfigDocument* doc_;
     QWidget* parent_;
