@@ -33,8 +33,10 @@
 #include "widgets/SessionSweepPanel.h"
 #include "widgets/SetupSequence.h"
 #include "widgets/SetupSteps.h"
+#include "widgets/StatusMessages.h"
 #include "widgets/ThresholdPanel.h"
 #include "widgets/TruthMarker.h"
+#include "widgets/WindowMenus.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -74,7 +76,7 @@ MainWindow::MainWindow(QWidget* parent)
     resultLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     notices_ = new NoticeBar(this);
     configFiles_ = new ConfigFiles(&doc_, notices_, this);
-    connect(configFiles_, &ConfigFiles::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
+    showMessagesOnStatusBar(this, configFiles_, &ConfigFiles::message, kShortMessageMs);
     layout->addWidget(notices_);
     auto* setupBar = new CameraSetupBar(this);
     cameraSetup_ = new CameraSetup(&doc_, configFiles_, notices_, setupBar, this);
@@ -118,7 +120,7 @@ MainWindow::MainWindow(QWidget* parent)
     addDockWidget(Qt::RightDockWidgetArea, coloursDock);
     tabifyDockWidget(panelDock, coloursDock);
     connect(this, &MainWindow::runShown, colours_, [this] { colours_->setRun(lastRun_); });
-    connect(colours_, &ColourEditor::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    showMessagesOnStatusBar(this, colours_, &ColourEditor::message);
     // The live camera's features and its automatic calibration: a tab, shown when a camera opens.
     auto* cameraDock = new QDockWidget(tr("Camera"), this);
     cameraDock->setObjectName("camera");
@@ -168,11 +170,11 @@ MainWindow::MainWindow(QWidget* parent)
         if (nav_->current() + 1 < nav_->frameCount())
             nav_->next();
         else
-            statusBar()->showMessage(tr("Last frame marked; U finds the frames still unmarked"), 8000);
+            statusBar()->showMessage(tr("Last frame marked; U finds the frames still unmarked"), kMessageMs);
     });
     connect(marker_, &TruthMarker::frameRequested, nav_, &FrameNavigator::goTo);
     connect(marker_, &TruthMarker::markingRefused, this, &MainWindow::offerSessionForTruth, Qt::QueuedConnection);
-    connect(marker_, &TruthMarker::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    showMessagesOnStatusBar(this, marker_, &TruthMarker::message);
     connect(marker_, &TruthMarker::described, this, [this](const QString& text) {
         truthLabel_->setText(text);
         // Marking mode changes what the left button does: it must be impossible to miss.
@@ -188,7 +190,7 @@ MainWindow::MainWindow(QWidget* parent)
         for (const auto& entry : truth_.rows()) marks.push_back({entry.first, FrameMarkKind::Truth});
         nav_->setMarks(marks, {FrameMarkKind::Truth});
     });
-    connect(panel_, &ThresholdPanel::editRefused, this, [this](const QString& why) { statusBar()->showMessage(why, 8000); });
+    showMessagesOnStatusBar(this, panel_, &ThresholdPanel::editRefused);
     // Escape leaves an editor (a threshold, the frame box): the panes take the keyboard back,
     // so arrows, Space and T act on frames again.
     auto* escape = new QAction(this);
@@ -202,8 +204,13 @@ MainWindow::MainWindow(QWidget* parent)
     connect(recovery_, &RecoveryFile::writeFailed, this, [this](const QString& why) { notices_->add(tr("Crash recovery:"), {why}); });
 
     setAcceptDrops(true);  // a session folder, video, image or config.yml dropped on the window opens
-    buildMenus();
-    marker_->fillMenu(menuBar()->addMenu(tr("&Truth")));
+    buildEditors();
+    menus_ = new WindowMenus(this, {&doc_, view_, nav_, live_, geometryEditor_, colours_, paneEditors_, cameraSetup_, marker_,
+                                    [this] { chooseSource(); }, [this] { chooseSourceFile(); }, [this] { chooseConfig(); },
+                                    [this](const QString& path) { openPath(path); }, [this] { saveConfig(); },
+                                    [this] { saveConfigAs(); }, [this] { saveAsSession(); }, [this] { applyToSession(); },
+                                    [this](QWidget* w) { showPanel(w); }, ballModel_});
+    recent_ = menus_->recentFiles();
     updateTitle();
     fitToScreen(this, QSize(1366, 768));  // a 1366x768 laptop: every dock and the status bar on screen
 }
@@ -221,99 +228,16 @@ MainWindow::~MainWindow()
     sweepPanel_ = nullptr;
 }
 
-void MainWindow::buildMenus()
+void MainWindow::buildEditors()
 {
-    QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&Open session or image folder..."), this, &MainWindow::chooseSource, QKeySequence::Open);
-    file->addAction(tr("Open &video or image file..."), this, &MainWindow::chooseSourceFile);
-    file->addAction(tr("Open &config..."), this, &MainWindow::chooseConfig);
-    recent_ = new RecentFiles(QStringLiteral("recentFiles"), file->addMenu(tr("Open &recent")), this);
-    connect(recent_, &RecentFiles::chosen, this, &MainWindow::openPath);
-    file->addSeparator();
-    file->addAction(tr("&Save config"), this, &MainWindow::saveConfig, QKeySequence::Save);
-    file->addAction(tr("Save config &as..."), this, &MainWindow::saveConfigAs, QKeySequence::SaveAs);
-    // An image folder or video becomes a session folder, so it can be marked and evaluated.
-    saveAsSession_ = new SaveAsSession(this);
-    connect(saveAsSession_, &SaveAsSession::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
-    saveAsSessionAction_ = file->addAction(tr("Save as sessio&n..."), this, &MainWindow::saveAsSession);
-    saveAsSessionAction_->setObjectName("saveAsSession");
-    saveAsSessionAction_->setStatusTip(tr("Copy the open image folder or video into a session folder (frames, config, truth.csv) and open it"));
-    saveAsSessionAction_->setEnabled(false);  // until a source is open
-    file->addAction(tr("&Revert to saved"), this, [this] {
-        if (const auto err = doc_.revert()) QMessageBox::warning(this, tr("Revert"), *err);
-    });
-    file->addSeparator();
-    file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
-
-    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    QAction* undo = doc_.undoStack()->createUndoAction(this, tr("&Undo"));
-    undo->setShortcut(QKeySequence::Undo);
-    QAction* redo = doc_.undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setShortcut(QKeySequence::Redo);
-    edit->addAction(undo);
-    edit->addAction(redo);
-
-    QMenu* view = menuBar()->addMenu(tr("&View"));
-    view->addAction(tr("&Fit all panes"), view_->transform(), &ViewTransform::fit, QKeySequence(Qt::Key_F));
-    view->addAction(tr("&1:1"), this, [this] {
-        const auto c = view_->transform()->isFit() ? QPointF(doc_.config().geometry.imageWidth / 2.0,
-                                                              doc_.config().geometry.imageHeight / 2.0)
-                                                    : view_->transform()->center();
-        view_->transform()->setZoom(1.0, c);
-    }, QKeySequence(Qt::Key_1));
-    if (auto* dock = findChild<QDockWidget*>("thresholds")) {
-        QAction* panel = dock->toggleViewAction();  // a closed panel comes back from here
-        panel->setText(tr("&Thresholds panel"));
-        view->addAction(panel);
-    }
-    if (auto* dock = findChild<QDockWidget*>("legend")) {
-        QAction* legend = dock->toggleViewAction();
-        legend->setText(tr("Overlay &legend"));
-        legend->setIcon(QIcon(":/icons/legend.png"));
-        view->addAction(legend);
-    }
-    view->addSeparator();
-    OverlayOptions& o = view_->overlays();
-    const std::pair<QString, bool*> toggles[] = {
-        {tr("Robot centre, mask radii and mask outline"), &o.geometry}, {tr("Radial areas"), &o.areas},
-        {tr("Radial sensors"), &o.sensors},               {tr("Candidates with scores"), &o.candidates},
-        {tr("Accepted ball"), &o.ball},                    {tr("Expected ball under the cursor"), &o.cursorRadius},
-        {tr("Ground truth"), &o.truth}};
-    for (const auto& [name, flag] : toggles) {
-        QAction* a = view->addAction(name);
-        a->setCheckable(true);
-        a->setChecked(*flag);
-        connect(a, &QAction::toggled, this, [this, flag = flag](bool on) {
-            *flag = on;
-            for (int i = 0; i < PipelineView::kPaneCount; ++i) view_->pane(i)->update();
-        });
-    }
-
-    // Playback keys work anywhere in the window but in text fields.
-    const std::pair<QKeySequence, void (FrameNavigator::*)()> keys[] = {
-        {Qt::Key_Space, &FrameNavigator::togglePlay}, {Qt::Key_Right, &FrameNavigator::next},
-        {Qt::Key_Left, &FrameNavigator::previous},    {Qt::Key_Home, &FrameNavigator::first},
-        {Qt::Key_End, &FrameNavigator::last}};
-    QMenu* play = menuBar()->addMenu(tr("&Playback"));
-    const QString names[] = {tr("Play / pause"), tr("Next frame"), tr("Previous frame"), tr("First frame"), tr("Last frame")};
-    for (int i = 0; i < 5; ++i) {
-        QAction* a = play->addAction(names[i], nav_, keys[i].second);
-        a->setShortcut(keys[i].first);
-    }
-
-    QMenu* camera = menuBar()->addMenu(tr("&Camera"));
-    live_->fillMenu(camera);
-    camera->addSeparator();
+    // Each one's filters on the panes are installed in this order (the last one sees events first).
     geometryEditor_ = new GeometryEditor(&doc_, view_, this);
-    geometryEditor_->fillMenu(camera);
-    connect(geometryEditor_, &GeometryEditor::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
-    colours_->fillMenu(menuBar()->addMenu(tr("C&olours")));
+    showMessagesOnStatusBar(this, geometryEditor_, &GeometryEditor::message, kShortMessageMs);
     // The pane editors, the geometry editor, truth marking and colour sampling: one of them holds
     // the left button at a time (PaneEditors arbitrates; sampling lets go of it and takes it).
     paneEditors_ = new PaneEditors(&doc_, view_, geometryEditor_, marker_, rayStrip_, this);
-    paneEditors_->fillMenu(camera);
     addToolBar(Qt::TopToolBarArea, paneEditors_->mask()->toolBar());
-    connect(paneEditors_, &PaneEditors::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    showMessagesOnStatusBar(this, paneEditors_, &PaneEditors::message);
     connect(paneEditors_, &PaneEditors::leftButtonTaken, colours_->sampler(), [this] { colours_->sampler()->setSampling(false); });
     connect(colours_->sampler(), &ColourSampler::samplingChanged, this, [this](bool on) {
         if (!on) return;
@@ -321,12 +245,9 @@ void MainWindow::buildMenus()
         if (auto* dock = findChild<QDockWidget*>("colours")) dock->raise();  // sampling goes to the class selected there
     });
     paneEditors_->distances()->hide();
-    camera->addAction(tr("&Distance map points and fit..."), this, [this] { showPanel(paneEditors_->distances()); })
-        ->setObjectName("distanceMapPoints");
     ballModel_ = new BallModelPanel(&doc_, &truth_, this);
     ballModel_->hide();
-    connect(ballModel_, &BallModelPanel::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
-    camera->addAction(tr("&Ball model samples and fit..."), this, [this] { showPanel(ballModel_); })->setObjectName("ballModelPanel");
+    showMessagesOnStatusBar(this, ballModel_, &BallModelPanel::message);
     // The guided set-up: a strip above the panes (under the yellow bar).
     setupSequence_ = new SetupSequence(this);
     qobject_cast<QBoxLayout*>(centralWidget()->layout())->insertWidget(2, setupSequence_);
@@ -334,19 +255,9 @@ void MainWindow::buildMenus()
     connectSetupSteps(*setupSequence_, {&doc_, cameraSetup_, geometryEditor_, paneEditors_->mask(), ballModel_,
                                         paneEditors_->distances(), colours_, [this](QWidget* w) { showPanel(w); },
                                         [this] { return saveConfig(); }});
-    camera->addSeparator();
-    setUpCameraAction_ = camera->addAction(tr("&Set up this camera (guided: rim, body, mask, ball, distances, colours)..."), cameraSetup_, &CameraSetup::setUp);
-    setUpCameraAction_->setObjectName("setUpCamera");
-    setUpCameraAction_->setStatusTip(tr("A step-by-step strip above the panes: centre and rim, robot body, mask, ball model, distance map, colours, save; each step skippable and undoable"));
-    setUpCameraAction_->setEnabled(false);  // until a source is open
-
-    QMenu* session = menuBar()->addMenu(tr("&Session"));
-    applyToSessionAction_ = session->addAction(tr("&Apply to whole session"), this, &MainWindow::applyToSession,
-                                               QKeySequence(Qt::CTRL + Qt::Key_R));
-    applyToSessionAction_->setObjectName("applyToSession");
-    applyToSessionAction_->setIcon(QIcon(":/icons/apply-session.png"));
-    applyToSessionAction_->setStatusTip(tr("Run the current and the saved config over every frame and mark what changed"));
-    applyToSessionAction_->setEnabled(false);  // until a source is open
+    // An image folder or video becomes a session folder, so it can be marked and evaluated.
+    saveAsSession_ = new SaveAsSession(this);
+    showMessagesOnStatusBar(this, saveAsSession_, &SaveAsSession::message);
 }
 
 bool MainWindow::openSource(const QString& path)
@@ -376,9 +287,9 @@ bool MainWindow::openSource(const QString& path)
     if (!doc_.isDirty()) offerRecoveredEdits();
     source_ = std::move(opened.source);
     sourcePath_ = path;  // Apply to whole session re-opens it in a thread of its own
-    applyToSessionAction_->setEnabled(true);
-    saveAsSessionAction_->setEnabled(true);
-    setUpCameraAction_->setEnabled(true);
+    menus_->applyToSession()->setEnabled(true);
+    menus_->saveAsSession()->setEnabled(true);
+    menus_->setUpCamera()->setEnabled(true);
     cameraSetup_->setSource(path);
     ballModel_->setDetections({});  // detections of the previous source
     if (sweepPanel_) sweepPanel_->reset();  // its results belong to the previous source
@@ -408,8 +319,8 @@ bool MainWindow::openCamera(const QString& source, SimulatedStart start)
     // A simulated camera started badly set keeps its bad start (to try the calibration on).
     source_ = live_->start(std::move(opened.camera), start == SimulatedStart::Good);
     sourcePath_.clear();  // nothing to re-open: no whole-session sweep, no camera set-up from files
-    applyToSessionAction_->setEnabled(false);
-    setUpCameraAction_->setEnabled(false);
+    menus_->applyToSession()->setEnabled(false);
+    menus_->setUpCamera()->setEnabled(false);
     if (sweepPanel_) sweepPanel_->reset();
     marker_->reset(0);
     openTruth(QString(), cv::Size());
@@ -707,7 +618,7 @@ void MainWindow::onSessionSweepFinished(std::shared_ptr<const SweepResult> resul
                                  .arg(detectionCount(result->current))
                                  .arg(result->visited)
                                  .arg(result->comparison.changed()),
-                             8000);
+                             kMessageMs);
 }
 
 }  // namespace omnitune

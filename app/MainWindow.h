@@ -12,7 +12,6 @@
 
 #include <memory>
 
-class QAction;
 class QLabel;
 
 namespace omnitune {
@@ -38,6 +37,7 @@ class SaveAsSession;
 class RecentFiles;
 class RecoveryFile;
 class TruthMarker;
+class WindowMenus;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -94,7 +94,7 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
-    void buildMenus();
+    void buildEditors();  // the editors on the panes and the set-up panels, before the menus
     void requestRun();
     void onRunFinished(std::shared_ptr<const PipelineRun> run);
     void clearForNewSource();
@@ -116,12 +116,12 @@ private:
     ThresholdPanel* panel_;
     CandidateTableModel* candidates_;
     TruthMarker* marker_;
-    RecentFiles* recent_ = nullptr;
+    WindowMenus* menus_ = nullptr;
+    RecentFiles* recent_ = nullptr;  // the menus' list
     NoticeBar* notices_ = nullptr;
     ConfigFiles* configFiles_ = nullptr;  // open, save, ask; which config a source gets
     RecoveryFile* recovery_ = nullptr;  // keeps unsaved config edits through a crash
     CameraSetup* cameraSetup_ = nullptr;  // a camera the config does not fit yet
-    QAction* setUpCameraAction_ = nullptr;
     SetupSequence* setupSequence_ = nullptr;  // the guided set-up strip
     BallModelPanel* ballModel_ = nullptr;     // samples, fit and residuals of r(d) (docked on first use)
     GeometryEditor* geometryEditor_ = nullptr;  // drag centre and radii, nudge the centre
@@ -147,9 +147,7 @@ private:
     // (enabled once a source is open) and the results panel, docked on first use.
     void onSessionSweepFinished(std::shared_ptr<const SweepResult> result);
     QString sourcePath_;
-    QAction* applyToSessionAction_ = nullptr;
     SaveAsSession* saveAsSession_ = nullptr;
-    QAction* saveAsSessionAction_ = nullptr;
     SessionSweepPanel* sweepPanel_ = nullptr;
 };
 
