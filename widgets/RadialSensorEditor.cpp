@@ -30,7 +30,7 @@ double snap(double v, double step) { return std::round(v / step) * step; }
 }  // namespace
 
 RadialSensorEditor::RadialSensorEditor(ConfigDocument* doc, PipelineView* view, RayStrip* strip, QObject* parent)
-    : QObject(parent), doc_(doc), view_(view), strip_(strip)
+    : QObject(parent), doc_(doc), view_(view), strip_(strip), drag_(doc)
 {
     connectPaneInput(view_, this, &RadialSensorEditor::onPressed, &RadialSensorEditor::onDragged, &RadialSensorEditor::onReleased);
     // The rays follow every edit at once (panel, undo), before the pipeline has re-run.
@@ -57,10 +57,8 @@ void RadialSensorEditor::fillMenu(QMenu* menu)
 void RadialSensorEditor::setEditing(bool on)
 {
     if (on == editing_) return;
-    if (grab_.handle != Handle::None) {  // a drag cut short (Esc, R while dragging): back to where it began
-        grab_ = {};
-        if (moved_) doc_->applyConfig(start_);
-    }
+    drag_.cancel();  // a drag cut short (Esc, R while dragging): back to where it began
+    grab_ = {};
     editing_ = on;
     emit editingChanged(on);  // the other editors give the left button up first
     holdPanes(view_, this, on);
@@ -126,19 +124,18 @@ RadialSensorEditor::Grab RadialSensorEditor::grabAt(QPointF p) const
 void RadialSensorEditor::onPressed(QPointF p)
 {
     grab_ = grabAt(p);
-    moved_ = false;
     if (grab_.handle == Handle::None) {
         emit message(tr("Press on a ray (drawn while editing) to drag its end, turn it or select it"));
         return;
     }
-    start_ = doc_->config();
+    drag_.begin();
     startAngle_ = angleAt(p);
     selectRay(grab_.ray);
 }
 
 Config RadialSensorEditor::dragged(QPointF p) const
 {
-    Config c = start_;
+    Config c = drag_.start();
     RadialSensorOptions& s = c.sensors;
     const double d = std::hypot(p.x() - c.geometry.centerX, p.y() - c.geometry.centerY);
     switch (grab_.handle) {
@@ -158,8 +155,7 @@ void RadialSensorEditor::onDragged(QPointF p)
         next.sensors.outerRadius == doc_->config().sensors.outerRadius &&
         next.sensors.angleOffsetDeg == doc_->config().sensors.angleOffsetDeg)
         return;
-    moved_ = true;
-    if (checkConfig(next).empty()) doc_->applyConfig(next);  // live, without an undo step per mouse move
+    drag_.show(next);
 }
 
 void RadialSensorEditor::onReleased(QPointF p)
@@ -168,16 +164,15 @@ void RadialSensorEditor::onReleased(QPointF p)
     onDragged(p);
     const Handle was = grab_.handle;
     grab_ = {};
-    if (!moved_) {  // a click: the ray is selected, nothing changes
-        emit message(tr("Ray %1 selected: its colour classes are under the panes").arg(selected_));
-        return;
-    }
-    const Config next = doc_->config();  // the last valid position of the drag
-    doc_->applyConfig(start_);  // the undo step goes from where the drag began
     const QString what = was == Handle::Turn    ? tr("Turn radial sensors")
                          : was == Handle::Inner ? tr("Set sensors' inner radius")
                                                 : tr("Set sensors' outer radius");
-    if (const auto why = doc_->replaceConfig(next, what)) emit message(*why);
+    std::optional<QString> refused;
+    if (!drag_.finish(what, &refused) && !refused) {  // a click: the ray is selected, nothing changes
+        emit message(tr("Ray %1 selected: its colour classes are under the panes").arg(selected_));
+        return;
+    }
+    if (refused) emit message(*refused);
     const RadialSensorOptions& s = doc_->config().sensors;
     emit message(tr("Radial sensors: %1 rays from %2 to %3 px, first at %4 deg")
                      .arg(s.count).arg(s.innerRadius, 0, 'f', 1).arg(s.outerRadius, 0, 'f', 1).arg(s.angleOffsetDeg, 0, 'f', 1));

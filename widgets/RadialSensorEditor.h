@@ -6,6 +6,7 @@
 // under the panes shows the colour classes along it for the frame on screen. Each drag is one
 // undo step; count, radii and offset are also in the threshold panel (sensors.*).
 #include "core/Config.h"
+#include "widgets/ConfigDrag.h"
 
 #include <QObject>
 #include <QPointF>
@@ -70,8 +71,7 @@ private:
     bool editing_ = false;
     int selected_ = -1;
     Grab grab_;
-    bool moved_ = false;
-    Config start_;          // as the drag began: the undo step goes from here
+    ConfigDrag drag_;       // live while the mouse moves, one undo step from the press on release
     double startAngle_ = 0; // degrees at the press, for turning
     std::vector<QWidget*> sketches_;
 };
