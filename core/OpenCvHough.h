@@ -50,6 +50,12 @@ struct OpenCvHoughOptions {
     // Combined algorithm: OpenCV's valid circles join the specific candidates in the ranking
     // (true), or OpenCV runs only when the specific search found nothing valid (thesis 4.3).
     bool joinRanking = false;
+    // Combined algorithm: the OpenCV search is skipped on a frame whose processed ring holds more
+    // edge pixels than this (the specific search's count; 0: never skipped). HoughCircles' time
+    // grows with the edges (dim speckle, sensor noise), and on such frames its circles are the
+    // speckle's, so the skip bounds the worst frame's time (issue 9 section 6). The OpenCV
+    // algorithm alone always runs it.
+    int maxEdgePixels = 6000;
 };
 
 class OpenCvHough {
