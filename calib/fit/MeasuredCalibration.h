@@ -21,13 +21,7 @@
 namespace omnitune {
 
 struct MeasuredCalibrationOptions {
-    // Outer radius this far inside the found rim (its half-level crossing): far enough that the
-    // rim's blur gives no edges in the ring, near enough that a ball at the rim keeps its outer
-    // border (validation.refuse_at_rim refuses a circle crossing the outer radius). Optics matrix
-    // (446 ball frames, 512 frames; combined / specific balls, false-positive frames): 4 px
-    // 209 / 204 balls, 9 / 4 FP; 3 px 214 / 208, 13 / 8; 2 px 226 / 222, 12 / 8 (none more at
-    // the rim); 1 px 234 / 228, 13 / 9 (rim false positives 1 -> 3).
-    double rimMarginPx = 2.0;
+    double rimMarginPx = RimFitOptions{}.marginPx;  // outer radius this far inside the found rim (RimFit.h)
     double bodyMarginPx = 3.0;     // inner radius this far outside the robot body
     double maxRadiusMarginPx = 3.0;// ball.max_radius: the largest measured radius plus this
     double minRadiusMarginPx = 1.0;// ball.min_radius: the smallest measured radius minus this (>= 2 px)
