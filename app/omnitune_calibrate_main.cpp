@@ -41,7 +41,7 @@ const std::vector<OptionSpec> kOptions = {
                             "                          distance-map with radius_px points fall back to the defaults)"},
     {"out", true, false, "FILE  where the updated config goes (an existing file is kept as FILE.bak)"},
     {"frames", true, false, "N     rim, colours and mask: frames used, spread over the input (default 8; mask 16)"},
-    {"margin", true, false, "PX    rim: outer radius this far inside the found rim (default 4)"},
+    {"margin", true, false, "PX    rim: outer radius this far inside the found rim (default 2)"},
     {"no-body", false, false, "      rim: keep the config's inner radius (fit the rim from one frame)"},
     {"points", true, false, "FILE  distance-map: CSV radius_px,distance_m or x,y,distance_m"},
     {"degree", true, false, "N     distance-map: polynomial degree 1..6 (default 3)"},

@@ -317,6 +317,7 @@ void BM_HardPipeline(benchmark::State& state)
     PipelineResult r;
     std::vector<double> ms;
     int found = 0;
+    int skipped = 0;  // combined: frames whose OpenCV search opencv_hough.max_edge_pixels skipped
     for (auto _ : state)
         for (std::size_t i = 0; i < f.frames; ++i)
             f.at(i, [&](const HardFrames::Cell& c, std::size_t k) {
@@ -327,6 +328,7 @@ void BM_HardPipeline(benchmark::State& state)
                 p.process(c.bgr[k], PixelFormat::Bgr8, r);
                 ms.push_back(clock.total());
                 found += r.detection.found;
+                skipped += r.opencvSkipped;
             });
     std::sort(ms.begin(), ms.end());
     auto percentile = [&](double p) {
@@ -336,6 +338,7 @@ void BM_HardPipeline(benchmark::State& state)
     state.counters["p50_ms"] = percentile(50);
     state.counters["p99_ms"] = percentile(99);
     state.counters["found_pct"] = ms.empty() ? 0.0 : 100.0 * found / double(ms.size());
+    state.counters["opencv_skipped_pct"] = ms.empty() ? 0.0 : 100.0 * skipped / double(ms.size());
     state.SetItemsProcessed(state.iterations() * std::int64_t(f.frames));
     state.counters["frames_per_iteration"] = double(f.frames);
 }

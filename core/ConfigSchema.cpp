@@ -330,6 +330,11 @@ std::vector<ConfigKey> buildSchema()
                         "Combined algorithm: OpenCV always runs and its valid circles join the specific candidates in the "
                         "ranking; 0: OpenCV runs only when the specific search found nothing valid (thesis 4.3)",
                         [](auto& c) -> auto& { return c.opencvHough.joinRanking; }));
+    s.push_back(intKey("opencv_hough.max_edge_pixels", "px", 0, 1000000, false,
+                       "Combined algorithm: the OpenCV search is skipped on a frame with more edge pixels than this in the "
+                       "processed ring (its time grows with them: dim speckle, noise); bounds the worst frame's time. 0: never "
+                       "skipped (thesis). The OpenCV algorithm alone always runs it",
+                       [](auto& c) -> auto& { return c.opencvHough.maxEdgePixels; }));
 
     // validation
     s.push_back(doubleKey("validation.min_non_green_pct", "%", 0, 100, true, "Non-green share the ball square needs; lower lets carpet patches through",

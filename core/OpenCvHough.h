@@ -50,6 +50,14 @@ struct OpenCvHoughOptions {
     // Combined algorithm: OpenCV's valid circles join the specific candidates in the ranking
     // (true), or OpenCV runs only when the specific search found nothing valid (thesis 4.3).
     bool joinRanking = false;
+    // Combined algorithm: the OpenCV search is skipped on a frame whose processed ring holds more
+    // edge pixels than this (the specific search's count; 0: never skipped). HoughCircles' time
+    // grows with the edges (dim speckle, sensor noise), and on such frames its circles are the
+    // speckle's, so the skip bounds the worst frame's time (issue 9 section 6). Measured (optics
+    // matrix, 446 ball frames; docs/performance.md): no cap 210 balls / 9 false-positive frames,
+    // 2000: 207 / 8, and the combined pipeline's CPU time on the bench's hard frames 1.51 -> 1.10x
+    // cv::HoughCircles (specific alone 1.00). The OpenCV algorithm alone always runs it.
+    int maxEdgePixels = 2000;
 };
 
 class OpenCvHough {

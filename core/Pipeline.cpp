@@ -159,9 +159,14 @@ struct Pipeline::Impl {
     {
         const Algorithm alg = config.algorithm;
         if (alg == Algorithm::Specific || alg == Algorithm::Combined) searchSpecific(r, clock);
-        if (alg == Algorithm::OpenCv ||
-            (alg == Algorithm::Combined && (config.opencvHough.joinRanking || !anyValid(r.candidates))))
+        if (alg == Algorithm::OpenCv) {
             searchOpenCv(r, clock);
+        } else if (alg == Algorithm::Combined && (config.opencvHough.joinRanking || !anyValid(r.candidates))) {
+            // The frame's edge count, known before HoughCircles runs, bounds its time.
+            const int cap = config.opencvHough.maxEdgePixels;
+            r.opencvSkipped = cap > 0 && r.hough.edgePixels > cap;
+            if (!r.opencvSkipped) searchOpenCv(r, clock);
+        }
     }
 
     void fillStageImages(const cv::Mat& frame, PixelFormat format, PipelineResult& r) const
@@ -200,6 +205,7 @@ void Pipeline::process(const cv::Mat& frame, PixelFormat format, PipelineResult&
     r.detection = BallDetection{};
     r.timings = StageTimings{};
     r.hough = HoughStats{};
+    r.opencvSkipped = false;
     if (!r.error.empty()) return;
 
     Stopwatch clock;

@@ -46,6 +46,7 @@ struct PipelineResult {
     std::vector<BallCandidate> candidates;
     StageTimings timings;
     HoughStats hough;   // edge pixels voting (subsampled beyond hough.max_edge_pixels), maxima, seeds
+    bool opencvSkipped = false;  // combined: the OpenCV search was due but skipped (opencv_hough.max_edge_pixels)
     StageImages stages;
     cv::Mat classes;    // CV_8UC1 colour class ids (always filled)
 

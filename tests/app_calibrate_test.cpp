@@ -1,6 +1,7 @@
 // omnitune-calibrate as a user runs it: the real binary (path from CMake) through QProcess on
 // the demo session and on files written here; exit codes, the one-line reasons, the configs it
 // writes and the backups it keeps.
+#include "calib/fit/RimFit.h"
 #include "core/ConfigParser.h"
 
 #include <opencv2/imgcodecs.hpp>
@@ -113,7 +114,8 @@ private slots:
         QVERIFY(load.ok());
         const auto& g = load.config.geometry;
         QVERIFY2(std::hypot(g.centerX - 320, g.centerY - 240) < 1.0, qPrintable(r.out));
-        QVERIFY2(std::abs(g.outerRadius - 240) < 3.0, qPrintable(r.out));
+        // 240 with the former 4 px rim margin; RimFitOptions::marginPx widens the ring by the difference.
+        QVERIFY2(std::abs(g.outerRadius - (4.0 - omnitune::RimFitOptions{}.marginPx) - 240) < 3.0, qPrintable(r.out));
         QVERIFY2(std::abs(g.innerRadius - 50) < 3.0, qPrintable(r.out));
         QCOMPARE(g.imageWidth, 640);
     }

@@ -9,6 +9,8 @@
 
 #include <QtTest>
 
+#include <algorithm>
+
 using namespace omnitune;
 using namespace omnitune::test;
 
@@ -253,6 +255,46 @@ private slots:
         QVERIFY(r.detection.found);
         QVERIFY(std::any_of(r.candidates.begin(), r.candidates.end(),
                             [](const auto& k) { return k.source == CandidateSource::OpenCvHough; }));
+    }
+
+    // opencv_hough.max_edge_pixels: the combined search skips HoughCircles on a frame with more
+    // edge pixels than the cap (its time grows with them), and says so; under the cap, and in the
+    // OpenCV algorithm alone, it runs.
+    void combinedSkipsOpenCvBeyondTheEdgeCap()
+    {
+        Config c;
+        c.algorithm = Algorithm::Combined;
+        c.hough.minAccumulator = 100000;  // the specific search finds nothing valid: OpenCV is due
+        c.hough.blobSeeds = false;
+        cv::Mat frame = greenField(c);
+        drawBall(frame, c, 150, 0);
+        auto openCvCandidates = [](const PipelineResult& r) {
+            return std::count_if(r.candidates.begin(), r.candidates.end(),
+                                 [](const auto& k) { return k.source == CandidateSource::OpenCvHough; });
+        };
+        PipelineResult r;
+        c.opencvHough.maxEdgePixels = 0;  // no cap
+        Pipeline(c).process(frame, PixelFormat::Bgr8, r);
+        QVERIFY(r.hough.edgePixels > 10);
+        QVERIFY(!r.opencvSkipped);
+        QVERIFY(openCvCandidates(r) > 0);
+        QVERIFY(r.detection.found);
+
+        c.opencvHough.maxEdgePixels = r.hough.edgePixels;  // at the cap: still runs
+        Pipeline(c).process(frame, PixelFormat::Bgr8, r);
+        QVERIFY(!r.opencvSkipped);
+        QVERIFY(openCvCandidates(r) > 0);
+
+        c.opencvHough.maxEdgePixels = r.hough.edgePixels - 1;  // over it: skipped
+        Pipeline(c).process(frame, PixelFormat::Bgr8, r);
+        QVERIFY(r.opencvSkipped);
+        QCOMPARE(int(openCvCandidates(r)), 0);
+        QVERIFY(!r.detection.found);
+
+        c.algorithm = Algorithm::OpenCv;  // alone it always runs
+        Pipeline(c).process(frame, PixelFormat::Bgr8, r);
+        QVERIFY(!r.opencvSkipped);
+        QVERIFY(openCvCandidates(r) > 0);
     }
 
     void blobSeedsFindABallWithoutVotes()

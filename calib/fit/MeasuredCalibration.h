@@ -21,7 +21,7 @@
 namespace omnitune {
 
 struct MeasuredCalibrationOptions {
-    double rimMarginPx = 4.0;      // outer radius this far inside the found rim
+    double rimMarginPx = RimFitOptions{}.marginPx;  // outer radius this far inside the found rim (RimFit.h)
     double bodyMarginPx = 3.0;     // inner radius this far outside the robot body
     double maxRadiusMarginPx = 3.0;// ball.max_radius: the largest measured radius plus this
     double minRadiusMarginPx = 1.0;// ball.min_radius: the smallest measured radius minus this (>= 2 px)

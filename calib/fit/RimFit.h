@@ -24,8 +24,14 @@ struct RimFitOptions {
     int rays = 360;                  // rays cast from the first-guess centre, evenly over 360 deg
     double darkRunPx = 3.0;          // px of dark the outside must show beyond the rim along a ray
     double brightRunPx = 3.0;        // px of bright the mirror must show inside the rim along a ray
-    double marginPx = 4.0;           // px; outer radius proposed this far inside the found rim (the
-                                     // rim's blur must not reach the processed ring)
+    // px; outer radius proposed this far inside the found rim (its half-level crossing): far
+    // enough that the rim's blur gives no edges in the ring, near enough that a ball at the rim
+    // keeps its outer border (validation.refuse_at_rim refuses a circle crossing the outer
+    // radius). Optics matrix, 2 frames per ball cell (446 ball frames, 512 frames; combined /
+    // specific balls found, false-positive frames): 4 px 209 / 204 balls, 9 / 4 FP; 3 px 214 /
+    // 208, 13 / 8; 2 px 226 / 222, 12 / 8 (none more at the rim); 1 px 234 / 228, 13 / 9 (rim
+    // false positives 1 -> 3). A blurrier real rim may need more: omnitune-calibrate rim --margin.
+    double marginPx = 2.0;
     double minContrast = 30.0;       // grey levels between the dark and the bright part of the frames
     double darkShare = 0.25;         // the outside must be as dark as the darkest quarter of the way from the
                                      // frames' 2nd to their 98th grey-level percentile (else the "edge" is a
