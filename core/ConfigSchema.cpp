@@ -403,6 +403,22 @@ std::vector<ConfigKey> buildSchema()
                           "carpet_by_colour: brightness is judged too when above 0 (never tighter than this); tells a shaded green "
                           "panel from the carpet, but also a shadow on the carpet",
                           [](auto& c) -> auto& { return c.validation.carpetTolerance.value; }));
+    s.push_back(doubleKey("validation.carpet_ring_inner", "radii", 1, 10, false,
+                          "carpet_by_colour: the carpet's colour is measured from this many expected radii (plus carpet_ring_margin_px) "
+                          "out; smaller: the ball's blurred border and contact shadow enter the carpet's colour",
+                          [](auto& c) -> auto& { return c.validation.carpetRingInner; }));
+    s.push_back(doubleKey("validation.carpet_ring_outer", "radii", 1, 20, false,
+                          "carpet_by_colour: ... to this many expected radii (plus 2 x carpet_ring_margin_px); larger: reaches lines, "
+                          "robots and vignetting farther away",
+                          [](auto& c) -> auto& { return c.validation.carpetRingOuter; }));
+    s.push_back(doubleKey("validation.carpet_ring_margin_px", "px", 0, 20, false,
+                          "carpet_by_colour: added to the ring's inner radius (twice to its outer one), so a small ball's ring stays a "
+                          "few pixels wide",
+                          [](auto& c) -> auto& { return c.validation.carpetRingMarginPx; }));
+    s.push_back(doubleKey("validation.border_blend_px", "px", 0, 20, false,
+                          "How wide the blend of ball and carpet colours at a border may be (motion blur, optics): a ray's edge leads "
+                          "into carpet when the carpet's own green starts within this many px past beyond_edge_px",
+                          [](auto& c) -> auto& { return c.validation.borderBlendPx; }));
     s.push_back(textKey("validation.ball_hint_class",
                         "The ball's colour class when known (a class name of colors.classes, not a field class): where enough of its "
                         "square has it (ball_hint_min_pct), the non-green and non-black tests are passed; none: no hint",
@@ -583,6 +599,8 @@ std::vector<ConfigIssue> checkConfig(const Config& c, const std::string& file)
         else if (c.colors.classes[std::size_t(hint)].role == ColourRole::Field)
             inconsistent("validation.ball_hint_class", "\"" + c.validation.ballHint + "\" is a field class: the ball is never carpet");
     }
+    if (!(c.validation.carpetRingInner < c.validation.carpetRingOuter))
+        inconsistent("validation.carpet_ring_inner", "carpet_ring_inner must be below carpet_ring_outer");
     if (!c.mask.empty() && c.mask.type() != CV_8UC1)
         out.push_back(issue(ConfigIssueKind::MaskError, file, "geometry.mask_file",
                             "the mask has " + std::to_string(c.mask.channels()) + " channel(s) of depth " +

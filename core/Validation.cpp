@@ -16,9 +16,6 @@ namespace {
 // Circle search rays: about one per pixel of circumference, never fewer than 16.
 int rayCount(double radius) { return std::max(16, int(std::ceil(2.0 * M_PI * radius))); }
 
-// px; how wide the blend of ball and carpet colours at a border may be (7 px motion blur, optics).
-constexpr double kBlendPx = 3.0;
-
 // The circle being scored and the images it is scored on.
 struct Circle {
     int x;
@@ -51,7 +48,7 @@ struct Circle {
     // colours (motion blur, optics) is green by class but not the carpet's green yet.
     bool carpetFollows(double r, double ca, double sa) const
     {
-        for (double d = 1.0; d <= kBlendPx; d += 1.0) {
+        for (double d = 1.0; d <= options.borderBlendPx + 1e-9; d += 1.0) {
             const cv::Point p = along(r + options.beyondEdgePx + d, ca, sa);
             if (!known(p)) return true;
             if (carpetAt(p)) return true;
@@ -344,9 +341,9 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
     Circle circle{x, y, radius, classes, edges, geometry, options, colour, roles, roles.idOf(options.ballHint), {}};
     if (colour && options.carpetByColour) {
         CV_Assert(colour->frame().size() == classes.size());
-        // Past the ball's blurred border and its contact shadow, before the next object.
-        circle.carpet =
-            CarpetColour::around(*colour, classes, geometry, roles, x, y, 1.5 * radius + 1.0, 2.5 * radius + 2.0);
+        circle.carpet = CarpetColour::around(*colour, classes, geometry, roles, x, y,
+                                             options.carpetRingInner * radius + options.carpetRingMarginPx,
+                                             options.carpetRingOuter * radius + 2.0 * options.carpetRingMarginPx);
     }
     ValidationScores s;
     scoreSquare(circle, squareSide, s);

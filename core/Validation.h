@@ -83,6 +83,17 @@ struct ValidationOptions {
     // with a FrameColour); without them, or with too little carpet around, every green is carpet.
     bool carpetByColour = true;
     CarpetTolerance carpetTolerance;
+    // The ring the carpet's colour is measured in, around the candidate: from
+    // carpetRingInner x radius + carpetRingMarginPx to carpetRingOuter x radius + 2 x
+    // carpetRingMarginPx. Past the ball's blurred border and its contact shadow, before the next
+    // object; the margin keeps a small ball's ring a few pixels wide.
+    double carpetRingInner = 1.5;     // expected radii
+    double carpetRingOuter = 2.5;     // expected radii
+    double carpetRingMarginPx = 1.0;  // px
+    // px; how wide the blend of ball and carpet colours at a border may be (7 px motion blur,
+    // optics): a ray's edge still leads into carpet when the carpet's own green starts within
+    // this many pixels past beyondEdgePx.
+    double borderBlendPx = 3.0;
 
     // The mirror rim (geometry.outer_radius): a candidate whose expected circle reaches farther
     // out than outer_radius - rimMarginPx is refused (OutsideArea). The ring ends there, so such
