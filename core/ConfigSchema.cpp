@@ -334,7 +334,7 @@ std::vector<ConfigKey> buildSchema()
     // validation
     s.push_back(doubleKey("validation.min_non_green_pct", "%", 0, 100, true, "Non-green share the ball square needs; lower lets carpet patches through",
                           [](auto& c) -> auto& { return c.validation.minNonGreenPct; }));
-    s.push_back(doubleKey("validation.min_non_black_pct", "%", 0, 100, true, "Non-black share the ball square needs; higher rejects part-black balls, lower lets robots through",
+    s.push_back(doubleKey("validation.min_non_black_pct", "%", 0, 100, false, "Non-black share the ball square needs; higher rejects part-black balls, lower lets robots through (thesis: 50, which on the optics matrix found 2 points fewer balls and no fewer false positives)",
                           [](auto& c) -> auto& { return c.validation.minNonBlackPct; }));
     s.push_back(doubleKey("validation.min_circularity_pct", "%", 0, 100, true, "Share of the circle found as edges; higher loses blurred moving balls, lower accepts lines and feet",
                           [](auto& c) -> auto& { return c.validation.minCircularityPct; }));
@@ -419,6 +419,20 @@ std::vector<ConfigKey> buildSchema()
                           "How wide the blend of ball and carpet colours at a border may be (motion blur, optics): a ray's edge leads "
                           "into carpet when the carpet's own green starts within this many px past beyond_edge_px",
                           [](auto& c) -> auto& { return c.validation.borderBlendPx; }));
+    s.push_back(boolKey("validation.black_by_local_carpet", false,
+                        "The non-black test counts a black-class pixel only when it is also darker than local_black_v_ratio x the "
+                        "carpet's mean V around the candidate (carpet_ring_*): a ball's shaded side in a vignetted corner or the dim "
+                        "half of an unevenly lit hall is not black; off: the colour class alone (black relative to the whole frame)",
+                        [](auto& c) -> auto& { return c.validation.blackByLocalCarpet; }));
+    s.push_back(doubleKey("validation.local_black_v_ratio", "ratio", 0.05, 1, false,
+                          "black_by_local_carpet: black is V <= this x the mean V of the carpet around the candidate; higher keeps "
+                          "more of a dark ball black (fails non-black), lower lets dim robots through",
+                          [](auto& c) -> auto& { return c.validation.localBlackVRatio; }));
+    s.push_back(boolKey("validation.border_at_pixel", false,
+                        "Circularity: a ray's border point is the centre of the edge pixel it met, not where along the ray it met it "
+                        "(up to ~0.7 px off, much of a small ball's min_radius_band_px band); off: the ray's step. On finds a few more "
+                        "small balls on the optics matrix but also passes a blurred round floor reflection, hence off",
+                        [](auto& c) -> auto& { return c.validation.borderAtPixel; }));
     s.push_back(textKey("validation.ball_hint_class",
                         "The ball's colour class when known (a class name of colors.classes, not a field class): where enough of its "
                         "square has it (ball_hint_min_pct), the non-green and non-black tests are passed; none: no hint",

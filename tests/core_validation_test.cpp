@@ -324,6 +324,31 @@ private slots:
         QVERIFY(refused);
     }
 
+    // A ball in the shade of an unevenly lit hall: the carpet around it at 60 % of the frame's,
+    // the ball's own colour dark enough to be black against the whole frame's carpet (the colour
+    // table's relative black) but not against the carpet beside it. black_by_local_carpet passes
+    // it; off, the non-black test rejects it. Robots stay black either way.
+    void blackByLocalCarpet()
+    {
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point2d at = pointAt(c, 130, 60);
+        const cv::Point p(int(std::lround(at.x)), int(std::lround(at.y)));
+        const int r = int(std::lround(expectedRadius(c, 130)));
+        cv::circle(frame, p, 5 * r, kGreen * 0.6, cv::FILLED);
+        drawBall(frame, c, 130, 60, cv::Scalar(0, 25, 50));  // a shaded orange, V 50
+        const BallCandidate local = validateFrame(c, frame, p);
+        QVERIFY2(local.rejected == RejectReason::None, qPrintable(verdict(local)));
+        c.validation.blackByLocalCarpet = false;
+        const BallCandidate global = validateFrame(c, frame, p);
+        QVERIFY2(global.rejected == RejectReason::NonBlack, qPrintable(verdict(global)));
+        // A black robot part in the same shade is black against the local carpet too.
+        c.validation.blackByLocalCarpet = true;
+        drawBall(frame, c, 130, 60, kBlack * 0.6);
+        const BallCandidate robot = validateFrame(c, frame, p);
+        QVERIFY2(robot.rejected == RejectReason::NonBlack, qPrintable(verdict(robot)));
+    }
+
     // Half the ball behind a masked rod: judged on its visible half (rays that run into the
     // mask are left out); with masked_rays_unknown off those rays are misses and it fails.
     void ballHalfBehindMaskedRod()
