@@ -34,6 +34,7 @@ public:
     int samples() const { return samples_; }
     double hue() const { return hue_; }  // circular mean, 0..180 (a red carpet's wraps through 0)
     double saturation() const { return sat_; }
+    double value() const { return val_; }  // mean V, 0..255
 
     // Whether `c` is the carpet's colour (always true when not valid()).
     bool matches(const Hsv& c, const CarpetTolerance& t) const;

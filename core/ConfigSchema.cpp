@@ -339,7 +339,7 @@ std::vector<ConfigKey> buildSchema()
     // validation
     s.push_back(doubleKey("validation.min_non_green_pct", "%", 0, 100, true, "Non-green share the ball square needs; lower lets carpet patches through",
                           [](auto& c) -> auto& { return c.validation.minNonGreenPct; }));
-    s.push_back(doubleKey("validation.min_non_black_pct", "%", 0, 100, true, "Non-black share the ball square needs; higher rejects part-black balls, lower lets robots through",
+    s.push_back(doubleKey("validation.min_non_black_pct", "%", 0, 100, false, "Non-black share the ball square needs; higher rejects part-black balls, lower lets robots through (thesis: 50, which on the optics matrix found 2 points fewer balls and no fewer false positives)",
                           [](auto& c) -> auto& { return c.validation.minNonBlackPct; }));
     s.push_back(doubleKey("validation.min_circularity_pct", "%", 0, 100, true, "Share of the circle found as edges; higher loses blurred moving balls, lower accepts lines and feet",
                           [](auto& c) -> auto& { return c.validation.minCircularityPct; }));
@@ -408,6 +408,36 @@ std::vector<ConfigKey> buildSchema()
                           "carpet_by_colour: brightness is judged too when above 0 (never tighter than this); tells a shaded green "
                           "panel from the carpet, but also a shadow on the carpet",
                           [](auto& c) -> auto& { return c.validation.carpetTolerance.value; }));
+    s.push_back(doubleKey("validation.carpet_ring_inner", "radii", 1, 10, false,
+                          "carpet_by_colour: the carpet's colour is measured from this many expected radii (plus carpet_ring_margin_px) "
+                          "out; smaller: the ball's blurred border and contact shadow enter the carpet's colour",
+                          [](auto& c) -> auto& { return c.validation.carpetRingInner; }));
+    s.push_back(doubleKey("validation.carpet_ring_outer", "radii", 1, 20, false,
+                          "carpet_by_colour: ... to this many expected radii (plus 2 x carpet_ring_margin_px); larger: reaches lines, "
+                          "robots and vignetting farther away",
+                          [](auto& c) -> auto& { return c.validation.carpetRingOuter; }));
+    s.push_back(doubleKey("validation.carpet_ring_margin_px", "px", 0, 20, false,
+                          "carpet_by_colour: added to the ring's inner radius (twice to its outer one), so a small ball's ring stays a "
+                          "few pixels wide",
+                          [](auto& c) -> auto& { return c.validation.carpetRingMarginPx; }));
+    s.push_back(doubleKey("validation.border_blend_px", "px", 0, 20, false,
+                          "How wide the blend of ball and carpet colours at a border may be (motion blur, optics): a ray's edge leads "
+                          "into carpet when the carpet's own green starts within this many px past beyond_edge_px",
+                          [](auto& c) -> auto& { return c.validation.borderBlendPx; }));
+    s.push_back(boolKey("validation.black_by_local_carpet", false,
+                        "The non-black test counts a black-class pixel only when it is also darker than local_black_v_ratio x the "
+                        "carpet's mean V around the candidate (carpet_ring_*): a ball's shaded side in a vignetted corner or the dim "
+                        "half of an unevenly lit hall is not black; off: the colour class alone (black relative to the whole frame)",
+                        [](auto& c) -> auto& { return c.validation.blackByLocalCarpet; }));
+    s.push_back(doubleKey("validation.local_black_v_ratio", "ratio", 0.05, 1, false,
+                          "black_by_local_carpet: black is V <= this x the mean V of the carpet around the candidate; higher keeps "
+                          "more of a dark ball black (fails non-black), lower lets dim robots through",
+                          [](auto& c) -> auto& { return c.validation.localBlackVRatio; }));
+    s.push_back(boolKey("validation.border_at_pixel", false,
+                        "Circularity: a ray's border point is the centre of the edge pixel it met, not where along the ray it met it "
+                        "(up to ~0.7 px off, much of a small ball's min_radius_band_px band); off: the ray's step. On finds a few more "
+                        "small balls on the optics matrix but also passes a blurred round floor reflection, hence off",
+                        [](auto& c) -> auto& { return c.validation.borderAtPixel; }));
     s.push_back(textKey("validation.ball_hint_class",
                         "The ball's colour class when known (a class name of colors.classes, not a field class): where enough of its "
                         "square has it (ball_hint_min_pct), the non-green and non-black tests are passed; none: no hint",
@@ -588,6 +618,8 @@ std::vector<ConfigIssue> checkConfig(const Config& c, const std::string& file)
         else if (c.colors.classes[std::size_t(hint)].role == ColourRole::Field)
             inconsistent("validation.ball_hint_class", "\"" + c.validation.ballHint + "\" is a field class: the ball is never carpet");
     }
+    if (!(c.validation.carpetRingInner < c.validation.carpetRingOuter))
+        inconsistent("validation.carpet_ring_inner", "carpet_ring_inner must be below carpet_ring_outer");
     if (!c.mask.empty() && c.mask.type() != CV_8UC1)
         out.push_back(issue(ConfigIssueKind::MaskError, file, "geometry.mask_file",
                             "the mask has " + std::to_string(c.mask.channels()) + " channel(s) of depth " +

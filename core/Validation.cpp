@@ -16,9 +16,6 @@ namespace {
 // Circle search rays: about one per pixel of circumference, never fewer than 16.
 int rayCount(double radius) { return std::max(16, int(std::ceil(2.0 * M_PI * radius))); }
 
-// px; how wide the blend of ball and carpet colours at a border may be (7 px motion blur, optics).
-constexpr double kBlendPx = 3.0;
-
 // The circle being scored and the images it is scored on.
 struct Circle {
     int x;
@@ -34,6 +31,13 @@ struct Circle {
     CarpetColour carpet;        // measured around the circle when carpetByColour
 
     bool byColour() const { return colour && options.carpetByColour && carpet.valid(); }
+    // A black-class pixel dark against the carpet around the candidate (blackByLocalCarpet).
+    bool blackAt(cv::Point p) const
+    {
+        if (!roles.black(classAt(p))) return false;
+        if (!colour || !options.blackByLocalCarpet || !carpet.valid()) return true;
+        return colour->hsvAt(p.x, p.y).v <= options.localBlackVRatio * carpet.value();
+    }
     // Inside the image and processed: its class and edge say something about the scene.
     bool known(cv::Point p) const
     {
@@ -51,7 +55,7 @@ struct Circle {
     // colours (motion blur, optics) is green by class but not the carpet's green yet.
     bool carpetFollows(double r, double ca, double sa) const
     {
-        for (double d = 1.0; d <= kBlendPx; d += 1.0) {
+        for (double d = 1.0; d <= options.borderBlendPx + 1e-9; d += 1.0) {
             const cv::Point p = along(r + options.beyondEdgePx + d, ca, sa);
             if (!known(p)) return true;
             if (carpetAt(p)) return true;
@@ -84,7 +88,7 @@ void scoreSquare(const Circle& c, int squareSide, ValidationScores& s)
             if (!u[xx]) continue;
             ++used;
             if (c.roles.field(cls[xx])) green += !byColour || c.carpetAt({xx, yy});
-            black += c.roles.black(cls[xx]);
+            black += c.blackAt({xx, yy});
             hint += c.hint != ColorClass::Unknown && cls[xx] == std::uint8_t(c.hint);
         }
     }
@@ -101,6 +105,7 @@ struct BorderRay {
     bool hit = false;        // the ball's border lies in the search band
     bool occluded = false;   // the border leads into a robot: the ray is not judged
     double hitRadius = 0.0;  // px from the centre, when hit
+    cv::Point2d hitAt;       // the border point relative to the centre, when hit
 };
 
 // Walks one ray out from the centre (from the band's inner side when any edge in the band
@@ -124,8 +129,13 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
         // A diagonal step could slip between the pixels of an 8-connected edge: look at the
         // two pixels it cuts across too, so that the ray is 4-connected.
         bool edge = false;
-        if (last.x != INT_MIN && p.x != last.x && p.y != last.y)
-            edge = edgeAt({p.x, last.y}) || edgeAt({last.x, p.y});
+        cv::Point edgePixel = p;
+        if (last.x != INT_MIN && p.x != last.x && p.y != last.y) {
+            if (edgeAt({p.x, last.y}))
+                edge = true, edgePixel = {p.x, last.y};
+            else if (edgeAt({last.x, p.y}))
+                edge = true, edgePixel = {last.x, p.y};
+        }
         last = p;
         if (!c.known(p)) {
             sawUnknown = true;
@@ -133,7 +143,7 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
             if (!edge) continue;
         } else {
             anyUsed = true;
-            edge = c.edgeAt(p) || edge;
+            if (c.edgeAt(p)) edge = true, edgePixel = p;
             // The ball's green meeting the carpet's green: the binary image has no edge there.
             const bool ballGreen = c.byColour() && c.ballGreenAt(p);
             if (!edge && prevBallGreen && c.carpetAt(p)) edge = true;
@@ -160,7 +170,12 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
         } else {
             ray.hit = true;
         }
-        if (ray.hit) ray.hitRadius = r;
+        if (ray.hit) {
+            // The edge pixel's own offset: the ray's step lands up to ~0.7 px off it, a large
+            // error on a ball of 3-6 px.
+            ray.hitAt = options.borderAtPixel ? cv::Point2d(edgePixel.x - c.x, edgePixel.y - c.y) : cv::Point2d(r * ca, r * sa);
+            ray.hitRadius = options.borderAtPixel ? std::hypot(ray.hitAt.x, ray.hitAt.y) : r;
+        }
     }
     if (!ray.hit && !blocked && options.ignoreOccludedRays) {
         // No border at all: the ball may run on into a robot standing against it.
@@ -252,7 +267,7 @@ void scoreCircularity(const Circle& c, ValidationScores& s)
         ++hits;
         hitSum += ray.hitRadius;
         hitSq += ray.hitRadius * ray.hitRadius;
-        points.emplace_back(ray.hitRadius * ca, ray.hitRadius * sa);
+        points.push_back(ray.hitAt);
     }
     if (hits > 0) s.borderSpreadPx = std::sqrt(std::max(0.0, hitSq / hits - (hitSum / hits) * (hitSum / hits)));
     if (usable == 0 || usable < options.minUsableRayShare * rays) return;
@@ -342,11 +357,11 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
                              const FrameColour* colour, const ColourRoles& roles)
 {
     Circle circle{x, y, radius, classes, edges, geometry, options, colour, roles, roles.idOf(options.ballHint), {}};
-    if (colour && options.carpetByColour) {
+    if (colour && (options.carpetByColour || options.blackByLocalCarpet)) {
         CV_Assert(colour->frame().size() == classes.size());
-        // Past the ball's blurred border and its contact shadow, before the next object.
-        circle.carpet =
-            CarpetColour::around(*colour, classes, geometry, roles, x, y, 1.5 * radius + 1.0, 2.5 * radius + 2.0);
+        circle.carpet = CarpetColour::around(*colour, classes, geometry, roles, x, y,
+                                             options.carpetRingInner * radius + options.carpetRingMarginPx,
+                                             options.carpetRingOuter * radius + 2.0 * options.carpetRingMarginPx);
     }
     ValidationScores s;
     scoreSquare(circle, squareSide, s);

@@ -18,7 +18,9 @@ class BallModel;
 
 struct ValidationOptions {
     double minNonGreenPct = 85.0;    // %; the ball is never green and fills its square
-    double minNonBlackPct = 50.0;    // %; rejects black robots; higher would lose part-black balls
+    // %; rejects black robots (a robot's square is mostly black). Thesis 50; on the optics matrix
+    // 30 found 2 points more balls (part-black balls, balls in shade) and no more false positives.
+    double minNonBlackPct = 30.0;
     double minCircularityPct = 70.0; // %; a still ball gives ~90, motion blur lowers it
     double radiusTolerance = 0.15;   // fraction of the expected radius searched for an edge
     // px; the search band is never thinner. Segmentation and Canny put a small ball's border up
@@ -76,6 +78,11 @@ struct ValidationOptions {
     bool circleFit = true;
     double fitMaxRadiusErrorPx = 3.0;  // px
     double fitMaxRadiusError = 0.25;   // fraction of the expected radius
+    // A ray's border point is the edge pixel it met, not the point at the ray's step where it
+    // met it (up to ~0.7 px off: the band of a 3-6 px ball is 1.5 px). Off by default: on the
+    // optics matrix it found 1.3 points more balls (combined), but it also makes a blurred round
+    // floor reflection round enough to pass (tests/core_validation realFrameFalsePositives).
+    bool borderAtPixel = false;
 
     // Green pixels count as carpet (non-green test, borders into carpet) only when their hue and
     // saturation match the carpet measured around the candidate (CarpetColour): green panels of
@@ -83,6 +90,25 @@ struct ValidationOptions {
     // with a FrameColour); without them, or with too little carpet around, every green is carpet.
     bool carpetByColour = true;
     CarpetTolerance carpetTolerance;
+    // The ring the carpet's colour is measured in, around the candidate: from
+    // carpetRingInner x radius + carpetRingMarginPx to carpetRingOuter x radius + 2 x
+    // carpetRingMarginPx. Past the ball's blurred border and its contact shadow, before the next
+    // object; the margin keeps a small ball's ring a few pixels wide.
+    double carpetRingInner = 1.5;     // expected radii
+    double carpetRingOuter = 2.5;     // expected radii
+    double carpetRingMarginPx = 1.0;  // px
+    // px; how wide the blend of ball and carpet colours at a border may be (7 px motion blur,
+    // optics): a ray's edge still leads into carpet when the carpet's own green starts within
+    // this many pixels past beyondEdgePx.
+    double borderBlendPx = 3.0;
+
+    // The non-black test counts a black-class pixel as black only when it is also darker than
+    // localBlackVRatio x the mean V of the carpet measured around the candidate (the ring above).
+    // The colour table's black is relative to the whole frame's carpet: in a vignetted corner or a
+    // dim half of an unevenly lit hall a ball's shaded side falls below it. Needs the frame's
+    // colours; without them, or with too little carpet around, the colour class alone decides.
+    bool blackByLocalCarpet = true;
+    double localBlackVRatio = 0.45;  // fraction of the local carpet's mean V
 
     // The mirror rim (geometry.outer_radius): a candidate whose expected circle reaches farther
     // out than outer_radius - rimMarginPx is refused (OutsideArea). The ring ends there, so such

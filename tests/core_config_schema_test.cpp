@@ -111,7 +111,7 @@ private slots:
         QTest::newRow("radius from 3") << "opencv_hough.min_radius" << "3" << true;
         QTest::newRow("radius to 25") << "opencv_hough.max_radius" << "25" << true;
         QTest::newRow("non-green 85") << "validation.min_non_green_pct" << "85" << true;
-        QTest::newRow("non-black 50") << "validation.min_non_black_pct" << "50" << true;
+        QTest::newRow("non-black 30") << "validation.min_non_black_pct" << "30" << false;
         QTest::newRow("circularity 70") << "validation.min_circularity_pct" << "70" << true;
         QTest::newRow("radius +-15%") << "validation.radius_tolerance" << "0.15" << true;
         QTest::newRow("30 fps") << "camera.frame_rate" << "30" << true;

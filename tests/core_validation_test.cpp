@@ -1,6 +1,7 @@
 // Candidate validation (thesis 4.4): non-green, non-black and circularity tests, each shown
 // rejecting the look-alike it exists for.
 #include "DrawnScene.h"
+#include "core/ConfigSchema.h"
 #include "core/FrameColour.h"
 #include "core/Validation.h"
 
@@ -275,6 +276,77 @@ private slots:
         farther.circleFit = false;  // the fit finds the ring's outer border (and rejects its radius)
         farther.beyondEdgePx = 5.0;
         QVERIFY2(score(farther).circularityPct < 30, qPrintable(QString::number(score(farther).circularityPct)));
+    }
+
+    void borderBlendPxIsTheConfigs()
+    {
+        // A ball inside a 3 px halo of a green that is not the carpet's (the blend of ball and
+        // carpet colours at a blurred border): its border leads into carpet within the blend
+        // width, so the fit finds the ball's own radius; with no blend allowed the border moves
+        // out to where the carpet's own green starts.
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 120, 0, kWhite);
+        const int r = int(std::lround(expectedRadius(c, 120)));
+        cv::circle(frame, p, r + 2, kPanelGreen, 3);
+        const BallCandidate blend = validateFrame(c, frame, p);
+        c.validation.borderBlendPx = 0;
+        const BallCandidate none = validateFrame(c, frame, p);
+        QVERIFY2(std::abs(blend.scores.fitRadiusPx - r) < 1.5, qPrintable(verdict(blend)));
+        QVERIFY2(none.scores.fitRadiusPx > blend.scores.fitRadiusPx + 1.5 || none.scores.circularityPct < 50,
+                 qPrintable(verdict(none)));
+    }
+
+    void carpetRingIsTheConfigs()
+    {
+        // A green-and-white ball on a patch of its panels' green (a worn carpet patch) out to
+        // three radii: measured in the default ring, the carpet is that green and the panels are
+        // carpet (non-green fails); measured farther out, the panels are ball.
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point2d at = pointAt(c, 130, 200);
+        const cv::Point p(int(std::lround(at.x)), int(std::lround(at.y)));
+        const int r = int(std::lround(expectedRadius(c, 130)));
+        cv::circle(frame, p, 3 * r, kPanelGreen, cv::FILLED);
+        drawBall(frame, c, 130, 200, kWhite);
+        for (int k = 0; k < 4; ++k)
+            cv::ellipse(frame, p, cv::Size(r, r), 0, 90.0 * k, 90.0 * k + 45.0, kPanelGreen, cv::FILLED);
+        const BallCandidate near = validateFrame(c, frame, p);
+        QVERIFY2(near.rejected == RejectReason::NonGreen, qPrintable(verdict(near)));
+        c.validation.carpetRingInner = 3.5;
+        c.validation.carpetRingOuter = 5.0;
+        const BallCandidate far = validateFrame(c, frame, p);
+        QVERIFY2(far.scores.nonGreenPct > c.validation.minNonGreenPct, qPrintable(verdict(far)));
+        // An empty or inverted ring is refused when the config is checked.
+        c.validation.carpetRingOuter = 3.5;
+        bool refused = false;
+        for (const ConfigIssue& i : checkConfig(c)) refused = refused || i.key == "validation.carpet_ring_inner";
+        QVERIFY(refused);
+    }
+
+    // A ball in the shade of an unevenly lit hall: the carpet around it at 60 % of the frame's,
+    // the ball's own colour dark enough to be black against the whole frame's carpet (the colour
+    // table's relative black) but not against the carpet beside it. black_by_local_carpet passes
+    // it; off, the non-black test rejects it. Robots stay black either way.
+    void blackByLocalCarpet()
+    {
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point2d at = pointAt(c, 130, 60);
+        const cv::Point p(int(std::lround(at.x)), int(std::lround(at.y)));
+        const int r = int(std::lround(expectedRadius(c, 130)));
+        cv::circle(frame, p, 5 * r, kGreen * 0.6, cv::FILLED);
+        drawBall(frame, c, 130, 60, cv::Scalar(0, 25, 50));  // a shaded orange, V 50
+        const BallCandidate local = validateFrame(c, frame, p);
+        QVERIFY2(local.rejected == RejectReason::None, qPrintable(verdict(local)));
+        c.validation.blackByLocalCarpet = false;
+        const BallCandidate global = validateFrame(c, frame, p);
+        QVERIFY2(global.rejected == RejectReason::NonBlack, qPrintable(verdict(global)));
+        // A black robot part in the same shade is black against the local carpet too.
+        c.validation.blackByLocalCarpet = true;
+        drawBall(frame, c, 130, 60, kBlack * 0.6);
+        const BallCandidate robot = validateFrame(c, frame, p);
+        QVERIFY2(robot.rejected == RejectReason::NonBlack, qPrintable(verdict(robot)));
     }
 
     // Half the ball behind a masked rod: judged on its visible half (rays that run into the
