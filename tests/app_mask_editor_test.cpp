@@ -59,19 +59,15 @@ class MaskEditorTest : public QObject {
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        isolateRecoveryFiles();
+        startWindowTests();
         QVERIFY(dir_.isValid());
     }
 
     void init()
     {
-        session_ = dir_.filePath(QStringLiteral("demo%1").arg(++count_));
-        QVERIFY(copyDemo(session_));
-        window_ = std::make_unique<MainWindow>();
-        QVERIFY(showActive(*window_));
-        QVERIFY(window_->openSource(session_));
-        QVERIFY(waitForFrame(*window_, 0));
+        session_ = freshDemo(dir_);
+        QVERIFY(!session_.isEmpty());
+        QVERIFY(openWindow(window_, session_, Shown::Active));
         QTest::keyClick(window_.get(), Qt::Key_M);
         QVERIFY(editor()->isEditing());
         QVERIFY(editor()->toolBar()->isVisible());
@@ -383,7 +379,6 @@ private:
 
     QTemporaryDir dir_;
     QString session_;
-    int count_ = 0;
     std::unique_ptr<MainWindow> window_;
 };
 
