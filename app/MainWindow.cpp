@@ -27,6 +27,7 @@
 #include "widgets/ScreenFit.h"
 #include "widgets/RecoveryFile.h"
 #include "widgets/RecoveryOffer.h"
+#include "widgets/RunSummary.h"
 #include "widgets/SaveAsSession.h"
 #include "calib/session/Session.h"
 #include "calib/source/SessionSource.h"
@@ -63,8 +64,7 @@ namespace omnitune {
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), view_(new PipelineView(this)), nav_(new FrameNavigator(this)),
       panel_(new ThresholdPanel(&doc_, this)), candidates_(new CandidateTableModel(this)),
-      marker_(new TruthMarker(&truth_, view_, doc_.undoStack(), this)), resultLabel_(new QLabel(this)), truthLabel_(new QLabel(this)),
-      timingLabel_(new QLabel(this)), pixelLabel_(new QLabel(this))
+      marker_(new TruthMarker(&truth_, view_, doc_.undoStack(), this)), summary_(new RunSummary(this)), pixelLabel_(new QLabel(this))
 {
     initResources();
     setWindowIcon(QIcon(":/icons/omnitune.png"));
@@ -72,8 +72,6 @@ MainWindow::MainWindow(QWidget* parent)
     auto* layout = new QVBoxLayout(central);
     layout->setContentsMargins(2, 2, 2, 2);
     layout->setSpacing(2);
-    resultLabel_->setObjectName("result");
-    resultLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     notices_ = new NoticeBar(this);
     configFiles_ = new ConfigFiles(&doc_, notices_, this);
     showMessagesOnStatusBar(this, configFiles_, &ConfigFiles::message, kShortMessageMs);
@@ -84,18 +82,7 @@ MainWindow::MainWindow(QWidget* parent)
     layout->addWidget(view_, 1);
     rayStrip_ = new RayStrip(this);  // the classes along a radial sensor ray, while they are edited
     layout->addWidget(rayStrip_);
-    auto* resultRow = new QHBoxLayout;
-    resultRow->addWidget(resultLabel_, 1);
-    truthLabel_->setObjectName("truth");
-    truthLabel_->setStyleSheet("color: #c030c0");  // the truth overlay's colour
-    truthLabel_->setWordWrap(true);  // the marking banner must never widen the window
-    resultLabel_->setWordWrap(true);
-    // Room for two lines from the start, so the panes do not jump while playing when a
-    // result or a truth line wraps.
-    for (QLabel* l : {resultLabel_, truthLabel_})
-        l->setMinimumHeight(l->fontMetrics().boundingRect(QRect(0, 0, 4000, 4000), Qt::TextWordWrap, "X\nX").height() + 2);
-    resultRow->addWidget(truthLabel_, 1);
-    layout->addLayout(resultRow);
+    layout->addWidget(summary_);
     cameraPanel_ = new CameraPanel(this);
     live_ = new LiveController(&doc_, nav_, &runner_, cameraPanel_, this);
     layout->addWidget(live_->recordBar());
@@ -140,9 +127,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     statusBar()->addWidget(pixelLabel_, 1);
     statusBar()->addPermanentWidget(live_->statusLabel());
-    statusBar()->addPermanentWidget(timingLabel_);
-    timingLabel_->setToolTip(tr("Time per stage of this frame, ms: segmentation, binary image, Canny edges, Hough, "
-                                "validation; total and the running average over about 100 frames"));
+    statusBar()->addPermanentWidget(summary_->timingLabel());
 
     connect(nav_, &FrameNavigator::frameRequested, this, [this](int index) {
         if (!live_->handleNavigation(index)) showFrame(index);  // live: a tick or a step in the replay buffer
@@ -175,12 +160,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(marker_, &TruthMarker::frameRequested, nav_, &FrameNavigator::goTo);
     connect(marker_, &TruthMarker::markingRefused, this, &MainWindow::offerSessionForTruth, Qt::QueuedConnection);
     showMessagesOnStatusBar(this, marker_, &TruthMarker::message);
-    connect(marker_, &TruthMarker::described, this, [this](const QString& text) {
-        truthLabel_->setText(text);
-        // Marking mode changes what the left button does: it must be impossible to miss.
-        truthLabel_->setStyleSheet(marker_->isMarking() ? "color: white; background: #a020a0; padding: 2px"
-                                                        : "color: #c030c0");
-    });
+    connect(marker_, &TruthMarker::described, this, [this](const QString& text) { summary_->setTruth(text, marker_->isMarking()); });
     connect(&truth_, &TruthDocument::changed, this, [this](int frame) {
         if (frame >= 0) {
             nav_->setMark(frame, FrameMarkKind::Truth, truth_.row(frame) != nullptr);
@@ -342,11 +322,8 @@ void MainWindow::clearForNewSource()
     colours_->setRun(nullptr);  // strokes sample nothing of the previous source
     view_->clear(tr("Opening %1: reading its first frame...").arg(sourceName_));
     candidates_->clear();
-    resultLabel_->setText(tr("Opening %1...").arg(sourceName_));
-    timingLabel_->clear();
+    summary_->opening(sourceName_);
     pixelLabel_->clear();
-    averaged_ = 0;
-    averageMs_ = 0;
     notices_->clear();  // they were about the previous source
 }
 
@@ -439,10 +416,7 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
         if (!run->frameUnreadable && !run->frame.empty() && run->frame.size() != configSize)
             cameraSetup_->frameSizeMismatch(run->frame.size());
         candidates_->clear();
-        // Short here (one line under the panes); the whole reason is on pane 1 and in the tooltip.
-        resultLabel_->setText(run->frameUnreadable ? tr("Frame %1 skipped: it cannot be read (pane 1 says why)").arg(run->frameIndex)
-                                                   : tr("Frame %1 not processed (pane 1 says why)").arg(run->frameIndex));
-        resultLabel_->setToolTip(text);
+        summary_->showUnprocessed(*run, text);
         emit runShown(run->frameIndex);
         return;
     }
@@ -453,28 +427,12 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
     overlay->candidates = run->result.candidates;
     overlay->detection = run->result.detection;
     view_->showRun(*run, overlay);
-    resultLabel_->setToolTip(QString());
     candidates_->setResult(run->result, run->config);
 
     const BallDetection& d = run->result.detection;
     if (!live_->isOpen())  // live frames are numbered by the replay buffer, not by slider places
         nav_->setMark(run->frameIndex, FrameMarkKind::Detected, d.found);  // the slider marks every frame seen with a ball
-    if (d.found) {
-        resultLabel_->setText(tr("Frame %1: ball at x %2 m, y %3 m (%4 m away, radius %5 px)")
-                                  .arg(run->frameIndex).arg(d.xM, 0, 'f', 2).arg(d.yM, 0, 'f', 2)
-                                  .arg(d.distanceM, 0, 'f', 2).arg(d.radiusPx, 0, 'f', 1));
-    } else {
-        resultLabel_->setText(tr("Frame %1: no ball. %2 candidate(s); see the table for the test each failed")
-                                  .arg(run->frameIndex).arg(run->result.candidates.size()));
-    }
-    const StageTimings& t = run->result.timings;
-    averageMs_ = (averageMs_ * averaged_ + t.totalMs) / (averaged_ + 1);
-    averaged_ = std::min(averaged_ + 1, 99);  // a running average over about the last 100 frames
-    // Short: the pixel inspector shares the status bar.
-    timingLabel_->setText(tr("ms: seg %1 | bin %2 | edges %3 | Hough %4 | valid. %5 | total %6 (avg %7)")
-                              .arg(t.segmentMs, 0, 'f', 1).arg(t.binaryMs, 0, 'f', 1).arg(t.edgesMs, 0, 'f', 1)
-                              .arg(t.houghMs, 0, 'f', 1).arg(t.validationMs, 0, 'f', 1).arg(t.totalMs, 0, 'f', 1)
-                              .arg(averageMs_, 0, 'f', 1));
+    summary_->showResult(*run);
     emit runShown(run->frameIndex);
 }
 

@@ -33,6 +33,7 @@ class SetupSequence;
 struct SweepResult;
 class ThresholdPanel;
 class RayStrip;
+class RunSummary;
 class SaveAsSession;
 class RecentFiles;
 class RecoveryFile;
@@ -130,9 +131,7 @@ private:
     ColourEditor* colours_ = nullptr;  // colour classes, sampling on the panes (Colours dock)
     CameraPanel* cameraPanel_ = nullptr;  // the live camera's features (Camera dock)
     LiveController* live_ = nullptr;      // live mode, replay buffer, recording
-    QLabel* resultLabel_;
-    QLabel* truthLabel_;
-    QLabel* timingLabel_;
+    RunSummary* summary_;  // the result and truth lines under the panes, the stage timings
     QLabel* pixelLabel_;
     std::shared_ptr<FrameSource> source_;  // read on the runner's thread once handed to it
     QString sourceName_;
@@ -140,8 +139,6 @@ private:
     quint64 sourceTag_ = 0;  // counts the sources opened; runs carry it
     quint64 generation_ = 1;
     std::shared_ptr<const PipelineRun> lastRun_;
-    double averageMs_ = 0;
-    int averaged_ = 0;
 
     // Apply to whole session: the source path it re-opens in its own thread, the action
     // (enabled once a source is open) and the results panel, docked on first use.

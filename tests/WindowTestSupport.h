@@ -8,8 +8,13 @@
 #include <QApplication>
 #include <QDirIterator>
 #include <QMessageBox>
+#include <QSettings>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <functional>
+#include <memory>
 
 namespace omnitune::testing {
 
@@ -34,6 +39,23 @@ inline bool copyDemo(const QString& to)
         if (!QFile::copy(file, target)) return false;
     }
     return true;
+}
+
+// What every window test's initTestCase does first: recent files and the other settings in
+// the test location (not the user's) and emptied, crash-recovery files in this run's own folder.
+inline void startWindowTests()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings().clear();
+    isolateRecoveryFiles();
+}
+
+// A new copy of the demo session in a folder of its own under `dir`; empty when copying failed.
+inline QString freshDemo(const QTemporaryDir& dir)
+{
+    static int copies = 0;
+    const QString session = dir.filePath(QStringLiteral("demo-%1").arg(++copies));
+    return copyDemo(session) ? session : QString();
 }
 
 // Answers the next modal message box with `button` and keeps its text. Event driven: checks
@@ -61,6 +83,13 @@ inline bool showActive(MainWindow& window)
     return QTest::qWaitForWindowActive(&window);
 }
 
+enum class Shown { AsIs, Active };
+
+// A new window on `session` with frame 0 on the panes. `Shown::Active` shows it at a laptop's
+// size and active (tests that send keys); `beforeOpen` runs between showing and opening.
+inline bool openWindow(std::unique_ptr<MainWindow>& window, const QString& session, Shown shown,
+                       const std::function<void(MainWindow&)>& beforeOpen = nullptr);
+
 // Waits until the window shows a run of `frame` and nothing is pending (about 10 s at most).
 inline bool waitForFrame(MainWindow& window, int frame)
 {
@@ -70,6 +99,19 @@ inline bool waitForFrame(MainWindow& window, int frame)
         spy.wait(200);
     }
     return false;
+}
+
+inline bool openWindow(std::unique_ptr<MainWindow>& window, const QString& session, Shown shown,
+                       const std::function<void(MainWindow&)>& beforeOpen)
+{
+    window = std::make_unique<MainWindow>();
+    if (shown == Shown::Active) {
+        if (!showActive(*window)) return false;
+    } else {
+        window->show();
+    }
+    if (beforeOpen) beforeOpen(*window);
+    return window->openSource(session) && waitForFrame(*window, 0);
 }
 
 // Drags with the left button on a pane from image point `from` to `to`, through the middle;

@@ -66,8 +66,7 @@ class CameraSetupTest : public QObject {
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        isolateRecoveryFiles();
+        startWindowTests();
         QVERIFY(dir_.isValid());
         QVERIFY(QDir().mkpath(camera()));
         QVERIFY(writeSquareCamera(camera(), 8));

@@ -52,14 +52,10 @@ private:
 
     void open()
     {
-        session_ = tmp_.filePath(QStringLiteral("demo-%1").arg(QDateTime::currentMSecsSinceEpoch()));
-        QVERIFY(copyDemo(session_));
-        window_ = std::make_unique<MainWindow>();
-        window_->show();
+        session_ = freshDemo(tmp_);
+        QVERIFY(!session_.isEmpty());
         // The Colours tab in front, as when calibrating colours.
-        window_->findChild<QDockWidget*>("colours")->raise();
-        QVERIFY(window_->openSource(session_));
-        QVERIFY(waitForFrame(*window_, 0));
+        QVERIFY(openWindow(window_, session_, Shown::AsIs, [](MainWindow& w) { w.findChild<QDockWidget*>("colours")->raise(); }));
         const TruthRow* t = window_->truth()->row(0);
         QVERIFY(t && t->ballVisible);
         ball_ = QPointF(t->px, t->py);
@@ -124,9 +120,7 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-        isolateRecoveryFiles();
+        startWindowTests();
     }
     void cleanup() { window_.reset(); }
 

@@ -39,12 +39,8 @@ private:
 
     QString openDemo()
     {
-        const QString session = tmp_.filePath(QStringLiteral("demo-%1").arg(QDateTime::currentMSecsSinceEpoch()));
-        if (!copyDemo(session)) return {};
-        window_ = std::make_unique<MainWindow>();
-        window_->show();
-        window_->findChild<QDockWidget*>("colours")->raise();
-        if (!window_->openSource(session) || !waitForFrame(*window_, 0)) return {};
+        const QString session = freshDemo(tmp_);
+        if (session.isEmpty() || !openWindow(window_, session, Shown::AsIs, [](MainWindow& w) { w.findChild<QDockWidget*>("colours")->raise(); })) return {};
         return session;
     }
 
@@ -58,9 +54,7 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-        isolateRecoveryFiles();
+        startWindowTests();
     }
     void cleanup() { window_.reset(); }
 

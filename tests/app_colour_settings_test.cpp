@@ -27,11 +27,8 @@ private:
 
     bool open()
     {
-        const QString session = tmp_.filePath(QStringLiteral("demo-%1").arg(QDateTime::currentMSecsSinceEpoch()));
-        if (!copyDemo(session)) return false;
-        window_ = std::make_unique<MainWindow>();
-        window_->show();
-        return window_->openSource(session) && waitForFrame(*window_, 0);
+        const QString session = freshDemo(tmp_);
+        return !session.isEmpty() && openWindow(window_, session, Shown::AsIs);
     }
     ConfigDocument* doc() const { return window_->document(); }
     QComboBox* hintCombo() const { return window_->findChild<QComboBox*>(QStringLiteral("validation.ball_hint_class")); }
@@ -39,9 +36,7 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-        isolateRecoveryFiles();
+        startWindowTests();
     }
     void cleanup() { window_.reset(); }
 

@@ -37,18 +37,14 @@ class DistancePointsTest : public QObject {
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        isolateRecoveryFiles();
+        startWindowTests();
         QVERIFY(dir_.isValid());
         QVERIFY(copyDemo(dir_.filePath("demo")));
     }
 
     void init()
     {
-        window_ = std::make_unique<MainWindow>();
-        QVERIFY(showActive(*window_));
-        QVERIFY(window_->openSource(dir_.filePath("demo")));
-        QVERIFY(waitForFrame(*window_, 0));
+        QVERIFY(openWindow(window_, dir_.filePath("demo"), Shown::Active));
         tester_ = std::make_unique<QAbstractItemModelTester>(panel()->model(), QAbstractItemModelTester::FailureReportingMode::QtTest);
     }
 

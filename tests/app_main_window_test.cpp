@@ -71,19 +71,14 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);  // recent files: not the user's settings
-        QSettings().clear();
-        isolateRecoveryFiles();
+        startWindowTests();
     }
 
     void init()
     {
-        session_ = tmp_.filePath(QStringLiteral("demo-%1").arg(QDateTime::currentMSecsSinceEpoch()));
-        QVERIFY(copyDemo(session_));
-        window_ = std::make_unique<MainWindow>();
-        window_->show();
-        QVERIFY(window_->openSource(session_));
-        QVERIFY(waitForFrame(0));
+        session_ = freshDemo(tmp_);
+        QVERIFY(!session_.isEmpty());
+        QVERIFY(openWindow(window_, session_, Shown::AsIs));
     }
     void cleanup()
     {

@@ -45,18 +45,14 @@ class RadialSensorsTest : public QObject {
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        isolateRecoveryFiles();
+        startWindowTests();
         QVERIFY(dir_.isValid());
         QVERIFY(copyDemo(dir_.path()));
     }
 
     void init()
     {
-        window_ = std::make_unique<MainWindow>();
-        QVERIFY(showActive(*window_));
-        QVERIFY(window_->openSource(dir_.path()));
-        QVERIFY(waitForFrame(*window_, 0));
+        QVERIFY(openWindow(window_, dir_.path(), Shown::Active));
         QTest::keyClick(window_.get(), Qt::Key_R);
         QVERIFY(editor()->isEditing());
         QVERIFY(strip()->isVisible());

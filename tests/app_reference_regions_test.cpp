@@ -26,18 +26,14 @@ class ReferenceRegionsTest : public QObject {
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        isolateRecoveryFiles();
+        startWindowTests();
         QVERIFY(dir_.isValid());
         QVERIFY(copyDemo(dir_.path()));
     }
 
     void init()
     {
-        window_ = std::make_unique<MainWindow>();
-        QVERIFY(showActive(*window_));
-        QVERIFY(window_->openSource(dir_.path()));
-        QVERIFY(waitForFrame(*window_, 0));
+        QVERIFY(openWindow(window_, dir_.path(), Shown::Active));
         // Both regions on screen, a region's pixel two widget pixels wide.
         const CameraAutoOptions& o = window_->document()->config().cameraAuto;
         window_->pipelineView()->transform()->setZoom(2.0, QPointF(o.whiteX, (o.whiteY + o.blackY) / 2.0));

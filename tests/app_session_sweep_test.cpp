@@ -93,9 +93,7 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);  // recent files: not the user's settings
-        QSettings().clear();
-        isolateRecoveryFiles();
+        startWindowTests();
     }
 
     void sweepMatchesTheBatchEvaluation()

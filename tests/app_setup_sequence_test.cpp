@@ -45,9 +45,7 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-        isolateRecoveryFiles();
+        startWindowTests();
     }
 
     void everyStepAppliesOneUndoCommand()

@@ -57,21 +57,16 @@ private:
 
     void open(bool keepTruth)
     {
-        session_ = tmp_.filePath(QStringLiteral("demo-%1").arg(QDateTime::currentMSecsSinceEpoch()));
-        QVERIFY(copyDemo(session_));
+        session_ = freshDemo(tmp_);
+        QVERIFY(!session_.isEmpty());
         if (!keepTruth) QVERIFY(QFile::remove(truthPath()));
-        window_ = std::make_unique<MainWindow>();
-        window_->show();
-        QVERIFY(window_->openSource(session_));
-        QVERIFY(waitForFrame(*window_, 0));
+        QVERIFY(openWindow(window_, session_, Shown::AsIs));
     }
 
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);  // recent files: not the user's settings
-        QSettings().clear();
-        isolateRecoveryFiles();
+        startWindowTests();
     }
     void cleanup() { window_.reset(); }
 

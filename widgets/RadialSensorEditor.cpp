@@ -3,7 +3,7 @@
 #include "widgets/ConfigDocument.h"
 #include "widgets/ImageView.h"
 #include "widgets/Overlay.h"
-#include "widgets/PaneInput.h"
+#include "widgets/PaneEditMode.h"
 #include "widgets/PaneSketch.h"
 #include "widgets/PipelineRunner.h"
 #include "widgets/PipelineView.h"
@@ -45,13 +45,10 @@ RadialSensorEditor::RadialSensorEditor(ConfigDocument* doc, PipelineView* view, 
 
 void RadialSensorEditor::fillMenu(QMenu* menu)
 {
-    modeAction_ = menu->addAction(tr("Edit &radial sensors on the panes"));
-    modeAction_->setObjectName(QStringLiteral("editSensors"));
-    modeAction_->setCheckable(true);
-    modeAction_->setShortcut(QKeySequence(Qt::Key_R));
-    modeAction_->setStatusTip(tr("Drag the ends of a ray to set the sensors' radii, its middle to turn them; click a ray "
-                                 "to see its colour classes"));
-    connect(modeAction_, &QAction::toggled, this, &RadialSensorEditor::setEditing);
+    modeAction_ = addEditModeAction(menu, this, &RadialSensorEditor::setEditing, tr("Edit &radial sensors on the panes"),
+                                    QStringLiteral("editSensors"), QKeySequence(Qt::Key_R),
+                                    tr("Drag the ends of a ray to set the sensors' radii, its middle to turn them; click a ray "
+                                       "to see its colour classes"));
 }
 
 void RadialSensorEditor::setEditing(bool on)
@@ -61,9 +58,7 @@ void RadialSensorEditor::setEditing(bool on)
     grab_ = {};
     editing_ = on;
     emit editingChanged(on);  // the other editors give the left button up first
-    holdPanes(view_, this, on);
-    if (modeAction_) modeAction_->setChecked(on);
-    for (QWidget* w : sketches_) w->setVisible(on);
+    showEditMode(view_, this, on, modeAction_, sketches_);
     strip_->setVisible(on);
     refreshStrip();
     emit message(on ? tr("Radial sensors: drag a ray's inner or outer end to set the radii, its middle to turn all rays; "

@@ -2,7 +2,7 @@
 
 #include "widgets/ConfigDocument.h"
 #include "widgets/ImageView.h"
-#include "widgets/PaneInput.h"
+#include "widgets/PaneEditMode.h"
 #include "widgets/PaneSketch.h"
 #include "widgets/PipelineView.h"
 
@@ -67,13 +67,10 @@ ReferenceRegionEditor::ReferenceRegionEditor(ConfigDocument* doc, PipelineView* 
 
 void ReferenceRegionEditor::fillMenu(QMenu* menu)
 {
-    modeAction_ = menu->addAction(tr("Edit white and blac&k reference regions"));
-    modeAction_->setObjectName(QStringLiteral("editReferenceRegions"));
-    modeAction_->setCheckable(true);
-    modeAction_->setShortcut(QKeySequence(Qt::Key_K));
-    modeAction_->setStatusTip(tr("Place the regions the automatic camera calibration reads: a white and a black card on "
-                                 "the robot (camera_auto.white_*, camera_auto.black_*)"));
-    connect(modeAction_, &QAction::toggled, this, &ReferenceRegionEditor::setEditing);
+    modeAction_ = addEditModeAction(menu, this, &ReferenceRegionEditor::setEditing, tr("Edit white and blac&k reference regions"),
+                                    QStringLiteral("editReferenceRegions"), QKeySequence(Qt::Key_K),
+                                    tr("Place the regions the automatic camera calibration reads: a white and a black card on "
+                                       "the robot (camera_auto.white_*, camera_auto.black_*)"));
 }
 
 void ReferenceRegionEditor::setEditing(bool on)
@@ -83,9 +80,7 @@ void ReferenceRegionEditor::setEditing(bool on)
     grab_ = {};
     editing_ = on;
     emit editingChanged(on);  // the other editors give the left button up first
-    holdPanes(view_, this, on);
-    if (modeAction_) modeAction_->setChecked(on);
-    for (QWidget* w : sketches_) w->setVisible(on);
+    showEditMode(view_, this, on, modeAction_, sketches_);
     emit message(on ? tr("Reference regions: drag inside a region to move it, from a corner to resize it; K or Esc ends")
                     : tr("Reference region editing off"));
 }
