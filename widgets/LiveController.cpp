@@ -19,6 +19,14 @@
 
 namespace omnitune {
 
+namespace {
+
+// While live the navigator's play timer is parked at a rate this low (one tick in more than a
+// day, at any playback speed, within QTimer's int range): live frames come from the grab timer.
+constexpr double kParkedNavigatorFps = 2e-6;
+
+}  // namespace
+
 LiveController::LiveController(const ConfigDocument* doc, FrameNavigator* nav, PipelineRunner* runner,
                                CameraPanel* cameraPanel, QWidget* window)
     : QObject(window), doc_(doc), nav_(nav), runner_(runner), cameraPanel_(cameraPanel), window_(window),
@@ -42,6 +50,13 @@ LiveController::LiveController(const ConfigDocument* doc, FrameNavigator* nav, P
     stopRecord_ = new QAction(tr("S&top recording"), this);
     stopRecord_->setObjectName("cameraStopRecording");
     connect(stopRecord_, &QAction::triggered, this, &LiveController::stopRecording);
+    connect(&grabTimer_, &QTimer::timeout, this, &LiveController::grabTick);
+    if (cameraPanel_) {
+        cameraPanel_->setGrabber([this](Frame& frame) { return grabLive(frame); });
+        connect(cameraPanel_, &CameraPanel::calibrationStarted, this, [this] {
+            if (camera_ && !failed_ && !nav_->isPlaying()) nav_->togglePlay();  // watch it converge, live
+        });
+    }
     updateActions();
 }
 
@@ -58,10 +73,27 @@ LiveController::~LiveController()
 void LiveController::fillMenu(QMenu* camera)
 {
     auto* sources = new CameraSourceMenu(camera->addMenu(tr("Live &source")), this);
-    connect(sources, &CameraSourceMenu::chosen, this, &LiveController::sourceChosen);
+    connect(sources, &CameraSourceMenu::chosen, this, &LiveController::onSourceChosen);
     camera->addAction(record_);
     camera->addAction(stopRecord_);
     camera->addAction(reconnect_);
+}
+
+void LiveController::onSourceChosen(const QString& source, SimulatedStart start)
+{
+    // The camera already live chosen again: keep its handle (a real device refuses a second
+    // one as busy) and apply the config's settings again, as opening it would.
+    if (camera_ && !failed_ && liveSource_ && *liveSource_ == std::make_pair(source, start)) {
+        QStringList notes;
+        if (applySettings_) applySettings(notes);
+        if (cameraPanel_) cameraPanel_->refresh();
+        notes.prepend(tr("It stays open (no second handle); the config's camera settings were applied again."));
+        emit notice(tr("%1 is the live camera already:").arg(description()), notes, nullptr);
+        if (!nav_->isPlaying()) nav_->togglePlay();
+        return;
+    }
+    chosen_ = std::make_pair(source, start);
+    emit sourceChosen(source, start);
 }
 
 CameraOpen LiveController::openCamera(const QString& source, SimulatedStart start, const Config& config)
@@ -75,6 +107,8 @@ std::shared_ptr<FrameSource> LiveController::start(std::unique_ptr<Camera> camer
 {
     close();
     const Config& config = doc_->config();
+    liveSource_ = chosen_;  // (empty when the camera did not come from the menu)
+    chosen_.reset();
     camera_ = std::make_unique<CameraFrameSource>(std::move(camera));
     replay_ = std::make_shared<ReplayBuffer>(ReplayBuffer::capacityFor(config.camera.replaySeconds, config.camera.frameRate));
     applySettings_ = applySettings;
@@ -87,8 +121,9 @@ std::shared_ptr<FrameSource> LiveController::start(std::unique_ptr<Camera> camer
     emit notice(tr("Camera settings from the config (camera section) on %1:").arg(description()), notes, nullptr);
     giveCameraToPanel();
     statusLabel_->show();
-    nav_->setFrameRate(config.camera.frameRate);
+    grabTimer_.setInterval(int(1000.0 / std::max(config.camera.frameRate, 1.0)));
     if (nav_->isPlaying()) nav_->togglePlay();  // a recorded source played: restart as live
+    nav_->setFrameRate(kParkedNavigatorFps);
     nav_->togglePlay();
     updateActions();
     return std::make_shared<ReplaySource>(replay_, camera_->description(), camera_->frameSize());
@@ -101,10 +136,13 @@ void LiveController::close()
     if (cameraPanel_) cameraPanel_->setCamera(nullptr);  // before the camera goes
     Camera& c = camera_->camera();
     if (nav_->isPlaying()) nav_->togglePlay();  // (onPlayingChanged sees the camera still open)
+    grabTimer_.stop();
     c.stop();
     c.close();
     camera_.reset();
+    liveSource_.reset();
     replay_.reset();  // the runner's ReplaySource keeps its own reference while it reads
+    nav_->setFrameRate(doc_->config().camera.frameRate);  // the navigator plays recordings again
     statusLabel_->clear();
     statusLabel_->hide();
     updateActions();
@@ -152,10 +190,10 @@ void LiveController::configChanged(const QString& key)
 bool LiveController::handleNavigation(int position)
 {
     if (!camera_) return false;
-    if (!nav_->isPlaying())
-        showPosition(position);
-    else if (!failed_)  // (after a fault, onPlayingChanged stops the play again)
-        grab();
+    // The navigator's own timer is parked while live: a position asked for is the user's step
+    // (arrow, slider, Home / End), which pauses there, as a DVR does.
+    if (nav_->isPlaying()) nav_->togglePlay();
+    showPosition(position);
     return true;
 }
 
@@ -168,41 +206,59 @@ void LiveController::onPlayingChanged(bool playing)
         });
         return;
     }
-    // Live: the slider holds the buffer and one place more, so that the navigator's next()
-    // always has somewhere to go (a tick); paused: exactly the buffer's frames.
+    // The slider holds exactly the buffer's frames; live, it sits on the newest.
     const int size = replay_->size();
+    nav_->setFrameCount(size);
     if (playing) {
         lastCameraIndex_ = -1;  // frames the camera gave while paused are not dropped ones
-        nav_->setFrameCount(size + 1);
         nav_->setCurrent(std::max(size - 1, 0));
         QTimer::singleShot(0, this, [this] {
-            if (camera_ && nav_->isPlaying()) grab();  // the first frame now, not a tick later
+            if (camera_ && nav_->isPlaying()) grabTick();  // the first frame now, not a tick later
         });
     } else {
-        nav_->setFrameCount(size);
         nav_->setCurrent(std::max(replay_->positionOf(shownSeq_), 0));
     }
+    updateGrabTimer();
     updateStatus();
 }
 
-void LiveController::grab()
+void LiveController::updateGrabTimer()
 {
+    // Paused, a recording still needs the camera's frames (a user who pauses to look keeps recording).
+    const bool on = camera_ && !failed_ && (nav_->isPlaying() || recorder_);
+    if (on && !grabTimer_.isActive()) grabTimer_.start();
+    if (!on) grabTimer_.stop();
+}
+
+void LiveController::grabTick()
+{
+    if (!camera_ || failed_) return;
+    if (cameraPanel_ && cameraPanel_->isCalibrating()) return;  // its own grabs feed the views now
     Frame frame;
+    grabLive(frame);
+}
+
+std::optional<CameraError> LiveController::grabLive(Frame& frame)
+{
+    if (!camera_ || failed_) return CameraError{CameraErrorKind::NotStarted, tr("no live camera").toStdString()};
     if (const auto err = camera_->read(FrameSource::kNext, frame)) {
+        const CameraError error{CameraErrorKind::Device, err->message};
         fail(QString::fromStdString(err->message));
-        return;
+        return error;
     }
     frame.index = camera_->lastCameraIndex();  // the camera's own count: gaps are frames it dropped
     if (lastCameraIndex_ >= 0) dropped_ += std::max(frame.index - lastCameraIndex_ - 1, 0);
     lastCameraIndex_ = frame.index;
     if (recorder_) recorder_->push(frame, false);
-    const int seq = replay_->push(frame);
     if (cameraPanel_) cameraPanel_->showFrame(frame.image);  // histogram and MSV, throttled by the panel
+    if (!nav_->isPlaying()) return std::nullopt;  // paused: the buffer stays as the user steps through it
+    const int seq = replay_->push(frame);
     const int size = replay_->size();
-    if (nav_->frameCount() != size + 1) nav_->setFrameCount(size + 1);
+    if (nav_->frameCount() != size) nav_->setFrameCount(size);
     nav_->setCurrent(size - 1);  // live: the slider sits on the newest frame
     offer(seq);
     updateStatus();
+    return std::nullopt;
 }
 
 void LiveController::offer(int seq)
@@ -248,7 +304,8 @@ QString LiveController::statusText() const
     if (failed_) return tr("camera stopped");
     if (!nav_->isPlaying()) {
         const int position = replay_->positionOf(shownSeq_);
-        return tr("paused \u00b7 frame %1 of %2 in the replay buffer").arg(position + 1).arg(replay_->size());
+        const QString text = tr("paused \u00b7 frame %1 of %2 in the replay buffer").arg(position + 1).arg(replay_->size());
+        return recorder_ ? text + tr(" \u00b7 recording goes on") : text;
     }
     return tr("live \u00b7 %1 fps \u00b7 %2 dropped").arg(shownAt_.size()).arg(dropped_);
 }
@@ -262,6 +319,7 @@ void LiveController::updateStatus()
 void LiveController::fail(const QString& why)
 {
     failed_ = true;
+    grabTimer_.stop();
     if (nav_->isPlaying()) nav_->togglePlay();
     if (cameraPanel_) cameraPanel_->setCamera(nullptr);  // the panel must not write to a dead camera
     stopRecording();
@@ -303,7 +361,8 @@ QString LiveController::startRecording(const QString& folder)
     if (!started.ok()) return QString::fromStdString(started.error);
     recorder_ = std::move(started.recorder);
     recordBar_->setRecorder(recorder_.get());
-    if (!nav_->isPlaying()) nav_->togglePlay();  // frames come from the live view
+    updateGrabTimer();  // records also while the view is paused
+    updateStatus();
     updateActions();
     return {};
 }
@@ -315,6 +374,8 @@ void LiveController::stopRecording()
     const CameraRecorderStatus s = recorder_->finish();
     const QString folder = QString::fromStdString(recorder_->folder());
     recorder_.reset();
+    updateGrabTimer();
+    updateStatus();
     updateActions();
     QStringList lines{tr("%1 frames written, %2 dropped; File > Open session or image folder replays it").arg(s.written).arg(s.dropped)};
     if (s.error) lines.prepend(QString::fromStdString(*s.error));

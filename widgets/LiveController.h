@@ -1,15 +1,17 @@
 #pragma once
 // The window's live mode with a camera (issue 12). The camera is driven on the GUI thread
-// only (the camera panel's automatic calibration uses it there too): each tick of the frame
-// navigator's play timer grabs the camera's newest frame into the replay buffer
-// (calib/camera/ReplayBuffer) and asks the window to show it; the window hands the runner a
-// ReplaySource, which reads the buffer by sequence number on the pipeline's thread. While the
-// pipeline is busy a newer frame replaces the one waiting (dropped, never queued); the status
-// label says "live · N fps · M dropped". Pause (the navigator's play / pause) freezes the
-// buffer, and the navigator's slider, arrows and keys then step through it frame by frame, as
-// SSL-Vision's DVR does; Play goes live again. Recording hands every grabbed frame to a
-// CameraRecorder (its own writer thread; RecordBar shows it). A camera fault stops live mode
-// and recording (its frames kept) and offers Reconnect.
+// only: the controller's own grab timer, at the camera's frame rate (the navigator's playback
+// speed is for recordings and does not scale it), grabs the camera's newest frame into the
+// replay buffer (calib/camera/ReplayBuffer) and asks the window to show it; the window hands
+// the runner a ReplaySource, which reads the buffer by sequence number on the pipeline's thread.
+// While the pipeline is busy a newer frame replaces the one waiting (dropped, never queued); the
+// status label says "live · N fps · M dropped". The navigator's play / pause is live / paused
+// (its own play timer is parked while live); paused, its slider, arrows and keys step through
+// the frozen buffer frame by frame, as SSL-Vision's DVR does; a step asked for while live
+// pauses there. Recording hands every grabbed frame to a CameraRecorder (its own writer thread;
+// RecordBar shows it), also while the view is paused. The camera panel's automatic calibration
+// grabs through grabLive(), so its frames reach the panes, the histogram and a recording. A
+// camera fault stops live mode and recording (its frames kept) and offers Reconnect.
 #include "calib/camera/CameraCatalog.h"
 #include "calib/camera/CameraRecorder.h"
 #include "calib/camera/ReplayBuffer.h"
@@ -19,9 +21,12 @@
 #include <QObject>
 #include <QPointer>
 #include <QStringList>
+#include <QTimer>
 
 #include <deque>
 #include <memory>
+#include <optional>
+#include <utility>
 
 class QAction;
 class QLabel;
@@ -78,6 +83,11 @@ public:
     // After a fault: opens the camera again and goes live.
     void reconnect();
 
+    // Grabs the camera's newest frame into the views (replay buffer and panes while live, the
+    // recording, the panel's histogram): the grab timer's and the panel's calibration's grab. A
+    // fault stops live mode (fail()) and is returned.
+    std::optional<CameraError> grabLive(Frame& frame);
+
 signals:
     void sourceChosen(const QString& source, omnitune::SimulatedStart start);  // Camera > Source
     void frameWanted(int seq);        // show replay frame `seq` (MainWindow::showFrame)
@@ -87,7 +97,9 @@ signals:
     void notice(const QString& title, const QStringList& lines, QAction* button);
 
 private:
-    void grab();
+    void onSourceChosen(const QString& source, SimulatedStart start);
+    void grabTick();
+    void updateGrabTimer();
     void offer(int seq);
     void showPosition(int position);
     void onPlayingChanged(bool playing);
@@ -114,6 +126,9 @@ private:
     QAction* reconnect_ = nullptr;
 
     std::unique_ptr<CameraFrameSource> camera_;  // GUI thread only
+    QTimer grabTimer_;                           // live, or recording while paused
+    // Camera > Live source: the choice start() makes live, and the one that is live.
+    std::optional<std::pair<QString, SimulatedStart>> chosen_, liveSource_;
     std::shared_ptr<ReplayBuffer> replay_;
     std::unique_ptr<CameraRecorder> recorder_;
     bool applySettings_ = false;

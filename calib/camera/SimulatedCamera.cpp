@@ -140,6 +140,18 @@ std::optional<CameraError> SimulatedCamera::grab(Frame& out)
     return std::nullopt;
 }
 
+std::optional<Config> SimulatedCamera::fittedConfig(const Config& base, std::string* error) const
+{
+    OpticsCell cell;
+    cell.image = options_.image;  // the same camera open() builds: same image size and mirror
+    const OpticsCamera camera = opticsCellCamera(cell, base);
+    if (!camera.calibration || !camera.calibration->ok()) {
+        if (error) *error = camera.calibration && camera.calibration->error ? *camera.calibration->error : "the fit failed";
+        return std::nullopt;
+    }
+    return camera.calibration->config;
+}
+
 std::vector<CameraFeature> SimulatedCamera::features()
 {
     const auto feature = [&](CameraFeatureId id, int max) {

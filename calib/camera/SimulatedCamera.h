@@ -10,9 +10,11 @@
 #include "calib/camera/Camera.h"
 #include "calib/camera/SensorModel.h"
 #include "core/CameraSettings.h"
+#include "core/Config.h"
 
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace omnitune {
@@ -59,6 +61,12 @@ public:
 
     // What the sensor applies now (the last frame's settings), unlike the registers features() reads.
     const CameraSettings& effectiveSettings() const { return effective_; }
+    // The config a team would fit to this camera's optics (calib/fit/MeasuredCalibration.h:
+    // rim, body, mask, distance map and ball model from the optics' measurements, never its
+    // truth), starting from `base` (colours and thresholds stay). Slow the first time per
+    // image size (the measurements are rendered, about a second), cached after; thread-safe.
+    // Empty with `error` set when the fit fails.
+    std::optional<Config> fittedConfig(const Config& base, std::string* error = nullptr) const;
     // Test hook: the next grab() fails as if the cable were pulled; later calls fail too until open().
     void simulateUnplug() { unplugged_ = true; }
 
