@@ -3,6 +3,8 @@
 #include "calib/camera/CameraFrameSource.h"
 #include "calib/camera/CameraSettingsIo.h"
 #include "calib/camera/ReplaySource.h"
+#include "calib/camera/SimulatedCamera.h"
+#include "calib/fit/MeasuredCalibration.h"
 #include "core/Geometry.h"
 #include "widgets/CameraPanel.h"
 #include "widgets/CameraSourceMenu.h"
@@ -17,6 +19,8 @@
 #include <QMenu>
 #include <QTimer>
 
+#include <cmath>
+
 namespace omnitune {
 
 namespace {
@@ -27,7 +31,7 @@ constexpr double kParkedNavigatorFps = 2e-6;
 
 }  // namespace
 
-LiveController::LiveController(const ConfigDocument* doc, FrameNavigator* nav, PipelineRunner* runner,
+LiveController::LiveController(ConfigDocument* doc, FrameNavigator* nav, PipelineRunner* runner,
                                CameraPanel* cameraPanel, QWidget* window)
     : QObject(window), doc_(doc), nav_(nav), runner_(runner), cameraPanel_(cameraPanel), window_(window),
       statusLabel_(new QLabel(window)), recordBar_(new RecordBar(window))
@@ -51,6 +55,11 @@ LiveController::LiveController(const ConfigDocument* doc, FrameNavigator* nav, P
     stopRecord_->setObjectName("cameraStopRecording");
     connect(stopRecord_, &QAction::triggered, this, &LiveController::stopRecording);
     connect(&grabTimer_, &QTimer::timeout, this, &LiveController::grabTick);
+    useFitted_ = new QAction(tr("Use the simulated camera's fitted config"), this);
+    useFitted_->setObjectName("cameraUseFittedConfig");
+    useFitted_->setToolTip(tr("Centre, radii, mask, distance map and ball model fitted to the simulated camera's optics "
+                              "(colours and thresholds stay); one undo step"));
+    connect(useFitted_, &QAction::triggered, this, &LiveController::useFittedConfig);
     if (cameraPanel_) {
         cameraPanel_->setGrabber([this](Frame& frame) { return grabLive(frame); });
         connect(cameraPanel_, &CameraPanel::calibrationStarted, this, [this] {
@@ -120,6 +129,7 @@ std::shared_ptr<FrameSource> LiveController::start(std::unique_ptr<Camera> camer
     if (applySettings_) this->applySettings(notes);
     emit notice(tr("Camera settings from the config (camera section) on %1:").arg(description()), notes, nullptr);
     giveCameraToPanel();
+    offerFittedConfig();
     statusLabel_->show();
     grabTimer_.setInterval(int(1000.0 / std::max(config.camera.frameRate, 1.0)));
     if (nav_->isPlaying()) nav_->togglePlay();  // a recorded source played: restart as live
@@ -143,6 +153,7 @@ void LiveController::close()
     liveSource_.reset();
     replay_.reset();  // the runner's ReplaySource keeps its own reference while it reads
     nav_->setFrameRate(doc_->config().camera.frameRate);  // the navigator plays recordings again
+    fitted_.reset();
     statusLabel_->clear();
     statusLabel_->hide();
     updateActions();
@@ -157,6 +168,72 @@ void LiveController::applySettings(QStringList& notes)
     const CameraSettingsApply applied = applyCameraSettings(camera_->camera(), doc_->config().camera);
     for (const std::string& n : applied.notes) notes << QString::fromStdString(n);
     if (applied.error) notes << QString::fromStdString(applied.error->message);
+}
+
+namespace {
+
+// The config's processed ring lies on the simulated camera's mirror: same frame size, and the
+// outer circle inside the fitted one (with the fit's own margin inside the rim).
+bool geometryFits(const GeometryOptions& config, const GeometryOptions& fitted)
+{
+    if (config.imageWidth != fitted.imageWidth || config.imageHeight != fitted.imageHeight) return false;
+    const double off = std::hypot(config.centerX - fitted.centerX, config.centerY - fitted.centerY);
+    return off + config.outerRadius <= fitted.outerRadius + MeasuredCalibrationOptions{}.rimMarginPx;
+}
+
+bool isBuiltInGeometry(const Config& config)
+{
+    const GeometryOptions d = Config{}.geometry;
+    const GeometryOptions& g = config.geometry;
+    return g.imageWidth == d.imageWidth && g.imageHeight == d.imageHeight && g.centerX == d.centerX &&
+           g.centerY == d.centerY && g.innerRadius == d.innerRadius && g.outerRadius == d.outerRadius &&
+           g.maskFile == d.maskFile && config.mask.empty();
+}
+
+}  // namespace
+
+void LiveController::offerFittedConfig()
+{
+    fitted_.reset();
+    const auto* simulated = dynamic_cast<const SimulatedCamera*>(&camera_->camera());
+    if (!simulated) return;
+    const Config& config = doc_->config();
+    std::string why;
+    std::optional<Config> fitted = simulated->fittedConfig(config, &why);
+    if (!fitted) {
+        emit notice(tr("The simulated camera's config could not be fitted:"), {QString::fromStdString(why)}, nullptr);
+        return;
+    }
+    const bool builtIn = isBuiltInGeometry(config);
+    if (!builtIn && geometryFits(config.geometry, fitted->geometry)) return;
+    fitted_ = std::move(fitted);
+    const GeometryOptions& g = config.geometry;
+    const GeometryOptions& f = fitted_->geometry;
+    const QString now = tr("%1x%2, centre (%3, %4), radii %5..%6 px")
+                            .arg(g.imageWidth).arg(g.imageHeight).arg(g.centerX, 0, 'f', 1).arg(g.centerY, 0, 'f', 1)
+                            .arg(g.innerRadius, 0, 'f', 0).arg(g.outerRadius, 0, 'f', 0);
+    const QString fit = tr("%1x%2, centre (%3, %4), radii %5..%6 px")
+                            .arg(f.imageWidth).arg(f.imageHeight).arg(f.centerX, 0, 'f', 1).arg(f.centerY, 0, 'f', 1)
+                            .arg(f.innerRadius, 0, 'f', 0).arg(f.outerRadius, 0, 'f', 0);
+    emit notice(builtIn ? tr("The config's geometry is the built-in default, not this camera's:")
+                        : tr("The config's geometry does not fit the simulated camera's mirror:"),
+                {tr("config: %1").arg(now), tr("fitted to the simulated camera: %1").arg(fit),
+                 tr("Outside the mirror the panes fill with candidates; the button applies the fitted config (Undo takes it back).")},
+                useFitted_);
+    updateActions();
+}
+
+void LiveController::useFittedConfig()
+{
+    if (!fitted_) return;
+    if (const auto err = doc_->replaceConfig(*fitted_, tr("Simulated camera's fitted config"))) {
+        emit notice(tr("The fitted config was refused:"), {*err}, nullptr);
+        return;
+    }
+    fitted_.reset();
+    updateActions();
+    emit notice(tr("The simulated camera's fitted config is applied"), {tr("Edit > Undo takes it back; File > Save keeps it.")},
+                nullptr);
 }
 
 cv::Mat LiveController::usedPixels() const
@@ -395,6 +472,7 @@ void LiveController::updateActions()
     record_->setEnabled(camera_ && !failed_ && !recorder_);
     stopRecord_->setEnabled(recorder_ != nullptr);
     reconnect_->setEnabled(camera_ && failed_);
+    useFitted_->setEnabled(fitted_.has_value());
 }
 
 }  // namespace omnitune

@@ -45,7 +45,7 @@ class RecordBar;
 class LiveController : public QObject {
     Q_OBJECT
 public:
-    LiveController(const ConfigDocument* doc, FrameNavigator* nav, PipelineRunner* runner, CameraPanel* cameraPanel,
+    LiveController(ConfigDocument* doc, FrameNavigator* nav, PipelineRunner* runner, CameraPanel* cameraPanel,
                    QWidget* window);
     ~LiveController() override;
 
@@ -54,6 +54,9 @@ public:
     QLabel* statusLabel() const { return statusLabel_; }  // for the status bar
     RecordBar* recordBar() const { return recordBar_; }   // for under the panes
     QAction* reconnectAction() const { return reconnect_; }
+    // "Use the simulated camera's fitted config": offered (a notice with this button) when the
+    // simulated camera opens under a config that does not fit its optics; one undo step.
+    QAction* useFittedConfigAction() const { return useFitted_; }
 
     // Opens camera `source` (CameraCatalog) with the config's frame rate; nothing live changes.
     static CameraOpen openCamera(const QString& source, SimulatedStart start, const Config& config);
@@ -106,6 +109,8 @@ private:
     void onRunFinished();
     void fail(const QString& why);
     void applySettings(QStringList& notes);
+    void offerFittedConfig();
+    void useFittedConfig();
     void giveCameraToPanel();
     void configChanged(const QString& key);
     cv::Mat usedPixels() const;  // the geometry's used ring when it fits the camera, else empty (whole frame)
@@ -114,7 +119,7 @@ private:
     void chooseRecordingFolder();
     QString description() const;
 
-    const ConfigDocument* doc_;
+    ConfigDocument* doc_;
     FrameNavigator* nav_;
     PipelineRunner* runner_;
     QPointer<CameraPanel> cameraPanel_;
@@ -124,6 +129,8 @@ private:
     QAction* record_ = nullptr;
     QAction* stopRecord_ = nullptr;
     QAction* reconnect_ = nullptr;
+    QAction* useFitted_ = nullptr;
+    std::optional<Config> fitted_;  // the simulated camera's fitted config while offered
 
     std::unique_ptr<CameraFrameSource> camera_;  // GUI thread only
     QTimer grabTimer_;                           // live, or recording while paused
