@@ -123,6 +123,7 @@ private slots:
         QVERIFY(std::abs(histogramMsv.back() - target.msvTarget) <= target.msvTolerance);
         QVERIFY(paneFrames.back() > paneFrames.front());
         QVERIFY(panel->revertButton()->isEnabled());
+        qInfo("converged in %d iterations: MSV %.2f -> %.2f (histogram)", iterations, histogramMsv.front(), histogramMsv.back());
         // The live frames after it are in the band.
         const int seqConverged = ring->newestSeq();
         QTRY_VERIFY_WITH_TIMEOUT(w.lastRun()->frameIndex > seqConverged, 20000);
