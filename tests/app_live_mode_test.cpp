@@ -13,6 +13,7 @@
 
 #include "LiveTestSupport.h"
 
+#include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
 #include <QRegularExpression>
@@ -194,6 +195,14 @@ private slots:
         // Live, the slider holds exactly the buffer's frames and sits on the newest.
         QCOMPARE(w.navigator()->frameCount(), ring->size());
         QCOMPARE(w.navigator()->current(), ring->size() - 1);
+        // The playback speed box is for recordings: the camera keeps its rate.
+        const int period = w.live()->grabIntervalMs();
+        QCOMPARE(period, int(1000.0 / w.document()->config().camera.frameRate));
+        auto* speed = w.navigator()->findChild<QComboBox*>();
+        QVERIFY(speed);
+        speed->setCurrentIndex(speed->count() - 1);  // 4x
+        QCOMPARE(w.live()->grabIntervalMs(), period);
+        QVERIFY(w.navigator()->isPlaying());
 
         // Paused while recording: the view holds still, the recording goes on.
         QTemporaryDir dir;

@@ -73,6 +73,7 @@ LiveController::~LiveController()
 {
     // The window calls close() while its widgets exist; here only what needs none of them.
     recorder_.reset();  // finishes the session
+    if (cameraPanel_) cameraPanel_->setGrabber({});  // it grabbed through this
     if (!camera_) return;
     if (cameraPanel_) cameraPanel_->setCamera(nullptr);
     camera_->camera().stop();

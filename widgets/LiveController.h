@@ -71,6 +71,8 @@ public:
     Camera* camera() const;
     const ReplayBuffer* replay() const { return replay_.get(); }
     int dropped() const { return dropped_; }
+    // The live grab timer's period (ms): 1000 / camera.frame_rate, whatever the playback speed.
+    int grabIntervalMs() const { return grabTimer_.interval(); }
     QString statusText() const;
 
     // The navigator asked for `position`: while live, a tick (grab the newest frame); paused,
