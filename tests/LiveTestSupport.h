@@ -6,6 +6,9 @@
 #include "WindowTestSupport.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QFileDialog>
+#include <QTimer>
 
 namespace omnitune::testing {
 
@@ -21,6 +24,20 @@ inline bool openSimulatedCamera(MainWindow& w)
         spy.wait(200);
     }
     return false;
+}
+
+// Answers the next modal folder dialog (QFileDialog::getExistingDirectory) with `folder`, which
+// must exist. Event driven: checks again on every turn of the event loop until it is there.
+inline void answerNextFolderDialog(const QString& folder)
+{
+    QTimer::singleShot(0, [folder] {
+        if (auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget())) {
+            dialog->selectFile(folder);
+            static_cast<QDialog*>(dialog)->accept();  // (public there): QFileDialog::accept checks the folder
+            return;
+        }
+        answerNextFolderDialog(folder);
+    });
 }
 
 }  // namespace omnitune::testing

@@ -13,6 +13,7 @@
 
 #include "LiveTestSupport.h"
 
+#include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
 #include <QRegularExpression>
@@ -144,6 +145,93 @@ private slots:
         QVERIFY(w.navigator()->isPlaying());
         QTRY_VERIFY_WITH_TIMEOUT(w.lastRun()->frameIndex > newest + 2, 20000);
         QVERIFY(w.cameraPanel()->spinBox(CameraFeatureId::Exposure));
+    }
+
+    void simulatedCameraOffersItsFittedConfigAsOneUndoStep()
+    {
+        MainWindow w;
+        QVERIFY(showActive(w));
+        const Config before = w.document()->config();
+        QVERIFY(openSimulatedCamera(w));
+        // The window's config is the built-in default: a notice with the fitted config's button.
+        QAction* use = w.live()->useFittedConfigAction();
+        QVERIFY(use->isEnabled());
+        QVERIFY2(w.notices()->text().contains("fitted to the simulated camera"), qPrintable(w.notices()->text()));
+        QToolButton* button = nullptr;
+        for (auto* b : w.notices()->findChildren<QToolButton*>())
+            if (b->isVisible() && b->defaultAction() == use) button = b;
+        QVERIFY2(button, "a button for the fitted config in the notice");
+        const auto* camera = dynamic_cast<SimulatedCamera*>(w.live()->camera());
+        QVERIFY(camera);
+        const std::optional<Config> fitted = camera->fittedConfig(before);
+        QVERIFY(fitted);
+        QVERIFY(fitted->geometry.centerX != before.geometry.centerX || fitted->geometry.outerRadius != before.geometry.outerRadius);
+        const int undoSteps = w.document()->undoStack()->count();
+        QTest::mouseClick(button, Qt::LeftButton);
+        QCOMPARE(w.document()->undoStack()->count(), undoSteps + 1);
+        QCOMPARE(w.document()->config().geometry.centerX, fitted->geometry.centerX);
+        QCOMPARE(w.document()->config().geometry.outerRadius, fitted->geometry.outerRadius);
+        QVERIFY(!use->isEnabled());
+        // The live runs use it, and the panes no longer fill with candidates from beyond the mirror.
+        QTRY_VERIFY_WITH_TIMEOUT(w.lastRun()->config.geometry.outerRadius == fitted->geometry.outerRadius, 20000);
+        w.document()->undoStack()->undo();  // one step takes it all back
+        QCOMPARE(w.document()->config().geometry.centerX, before.geometry.centerX);
+        QCOMPARE(w.document()->config().geometry.outerRadius, before.geometry.outerRadius);
+
+        // A config that fits the simulated camera (its own fitted one) is left alone.
+        w.document()->reset(*fitted);  // (clean: opening asks nothing)
+        QVERIFY(w.openCamera("simulated", SimulatedStart::Dark));
+        QVERIFY(!w.live()->useFittedConfigAction()->isEnabled());
+        QVERIFY(!w.notices()->text().contains("fitted to the simulated camera"));
+    }
+
+    void liveSliderRecordingWhilePausedAndTheSameCameraAgain()
+    {
+        MainWindow w;
+        QVERIFY(showActive(w));
+        QVERIFY(openSimulatedCamera(w));
+        const ReplayBuffer* ring = w.live()->replay();
+        QTRY_VERIFY_WITH_TIMEOUT(ring->size() >= 4, 20000);
+        // Live, the slider holds exactly the buffer's frames and sits on the newest.
+        QCOMPARE(w.navigator()->frameCount(), ring->size());
+        QCOMPARE(w.navigator()->current(), ring->size() - 1);
+        // The playback speed box is for recordings: the camera keeps its rate.
+        const int period = w.live()->grabIntervalMs();
+        QCOMPARE(period, int(1000.0 / w.document()->config().camera.frameRate));
+        auto* speed = w.navigator()->findChild<QComboBox*>();
+        QVERIFY(speed);
+        speed->setCurrentIndex(speed->count() - 1);  // 4x
+        QCOMPARE(w.live()->grabIntervalMs(), period);
+        QVERIFY(w.navigator()->isPlaying());
+
+        // Paused while recording: the view holds still, the recording goes on.
+        QTemporaryDir dir;
+        QCOMPARE(w.live()->startRecording(dir.path() + "/paused"), QString());
+        QTest::keyClick(&w, Qt::Key_Space);
+        QVERIFY(!w.navigator()->isPlaying());
+        QVERIFY(w.live()->isRecording());
+        const int size = ring->size();
+        const int newest = ring->newestSeq();
+        const int written = w.live()->recorder()->status().written;
+        QTRY_VERIFY_WITH_TIMEOUT(w.live()->recorder()->status().written >= written + 10, 20000);
+        QCOMPARE(ring->size(), size);
+        QCOMPARE(ring->newestSeq(), newest);
+        QVERIFY(w.live()->statusLabel()->text().contains("recording goes on"));
+        w.live()->stopRecording();
+
+        // Choosing the live camera again keeps its handle (a real device would refuse a second one).
+        Camera* camera = w.live()->camera();
+        auto* again = w.findChild<QAction*>("cameraSource:simulated");
+        QVERIFY(again);
+        again->trigger();
+        QCOMPARE(w.live()->camera(), camera);
+        QVERIFY2(w.notices()->text().contains("is the live camera already"), qPrintable(w.notices()->text()));
+        QVERIFY(w.navigator()->isPlaying());
+        QTRY_VERIFY_WITH_TIMEOUT(ring->newestSeq() > newest + 2, 20000);
+        // Another start of the simulated camera is another camera: opened afresh.
+        w.findChild<QAction*>("cameraSource:simulated:dark")->trigger();
+        QVERIFY(w.live()->isOpen());
+        QVERIFY(w.live()->camera() != camera || w.live()->camera()->description().find("dark") != std::string::npos);
     }
 
     void aCameraThatCannotOpenLeavesTheSourceOnScreen()

@@ -286,13 +286,22 @@ void CameraPanel::startCalibration()
     plot_->setTargets(options_);  // and no points: each run plots from its first iteration
     stepTimer_.start();
     updateButtons();
+    emit calibrationStarted();
 }
 
 void CameraPanel::stepCalibration()
 {
-    if (!calibration_) return stepTimer_.stop();
+    if (!calibration_ || !camera_) return stepTimer_.stop();
+    Frame frame;
+    std::optional<CameraError> err = grabber_ ? grabber_(frame) : camera_->grab(frame);
+    if (!calibration_) return;  // the grab's fault took the camera away (setCamera(nullptr))
     CameraAutoIteration it;
-    const auto err = calibration_->step(it);
+    bool measured = false;
+    if (err)
+        calibration_->abort(err->message);
+    else
+        err = calibration_->take(frame, it, measured);
+    if (!measured && calibration_->state() == CameraAutoState::Running && !err) return;  // skipped: next turn
     if (it.iteration > 0) {
         emit calibrationIteration(it.iteration, it.measured.msv, it.measured.u, it.measured.v, it.measured.black);
         setStatus(tr("iteration %1: %2").arg(it.iteration).arg(QString::fromStdString(formatCameraMeasurement(it.measured))),

@@ -7,8 +7,10 @@
 // per event-loop turn, its progress in the status line and its convergence in plots
 // (CalibrationPlot). showFrame() keeps a live intensity histogram with its mean sample value
 // (MSV) and the reference regions' chroma and black level, at most a few times a second. The
-// camera is driven on the GUI thread: each calibration iteration waits for a few frames
-// (~0.1 s on a 30 frames/s camera).
+// camera is driven on the GUI thread, one frame per event-loop turn (a real camera's grab waits
+// at most one frame period, as the live view's does), so the window stays responsive. The
+// frames come through a grabber: the live view's (setGrabber) puts each one into the replay
+// buffer, the panes, the histogram and a recording, so the user watches the loop converge.
 #include "calib/camera/Camera.h"
 #include "calib/camera/CameraAutoCalibration.h"
 #include "core/CameraAutoOptions.h"
@@ -17,6 +19,7 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <functional>
 #include <map>
 #include <memory>
 
@@ -48,6 +51,12 @@ public:
     // calibration and the histogram use these; a running calibration keeps its own.
     void setOptions(const CameraAutoOptions& options, const cv::Mat& usedMask);
 
+    // Where the calibration's frames come from: `grab` (the live view's, which shows them), or
+    // the camera itself when empty. It may take the camera away (setCamera(nullptr)) on a fault.
+    using Grabber = std::function<std::optional<CameraError>(Frame&)>;
+    void setGrabber(Grabber grab) { grabber_ = std::move(grab); }
+    bool isCalibrating() const { return stepTimer_.isActive(); }
+
     // Reads every feature back into the controls.
     void refresh();
 
@@ -76,6 +85,8 @@ public slots:
     void showFrame(const cv::Mat& bgr);
 
 signals:
+    // A calibration started (the live view goes live to show its frames).
+    void calibrationStarted();
     // After each calibration iteration, for plots.
     void calibrationIteration(int iteration, double msv, double u, double v, double black);
     // When the calibration ends: converged or not, and the status line's text.
@@ -118,6 +129,7 @@ private:
     int histogramIntervalMs_ = kHistogramIntervalMs;
     QTimer stepTimer_;
     std::unique_ptr<CameraAutoCalibration> calibration_;
+    Grabber grabber_;
     bool refreshing_ = false;  // controls being set from the camera: no writes back
 };
 

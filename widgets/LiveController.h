@@ -1,15 +1,17 @@
 #pragma once
 // The window's live mode with a camera (issue 12). The camera is driven on the GUI thread
-// only (the camera panel's automatic calibration uses it there too): each tick of the frame
-// navigator's play timer grabs the camera's newest frame into the replay buffer
-// (calib/camera/ReplayBuffer) and asks the window to show it; the window hands the runner a
-// ReplaySource, which reads the buffer by sequence number on the pipeline's thread. While the
-// pipeline is busy a newer frame replaces the one waiting (dropped, never queued); the status
-// label says "live · N fps · M dropped". Pause (the navigator's play / pause) freezes the
-// buffer, and the navigator's slider, arrows and keys then step through it frame by frame, as
-// SSL-Vision's DVR does; Play goes live again. Recording hands every grabbed frame to a
-// CameraRecorder (its own writer thread; RecordBar shows it). A camera fault stops live mode
-// and recording (its frames kept) and offers Reconnect.
+// only: the controller's own grab timer, at the camera's frame rate (the navigator's playback
+// speed is for recordings and does not scale it), grabs the camera's newest frame into the
+// replay buffer (calib/camera/ReplayBuffer) and asks the window to show it; the window hands
+// the runner a ReplaySource, which reads the buffer by sequence number on the pipeline's thread.
+// While the pipeline is busy a newer frame replaces the one waiting (dropped, never queued); the
+// status label says "live · N fps · M dropped". The navigator's play / pause is live / paused
+// (its own play timer is parked while live); paused, its slider, arrows and keys step through
+// the frozen buffer frame by frame, as SSL-Vision's DVR does; a step asked for while live
+// pauses there. Recording hands every grabbed frame to a CameraRecorder (its own writer thread;
+// RecordBar shows it), also while the view is paused. The camera panel's automatic calibration
+// grabs through grabLive(), so its frames reach the panes, the histogram and a recording. A
+// camera fault stops live mode and recording (its frames kept) and offers Reconnect.
 #include "calib/camera/CameraCatalog.h"
 #include "calib/camera/CameraRecorder.h"
 #include "calib/camera/ReplayBuffer.h"
@@ -19,9 +21,12 @@
 #include <QObject>
 #include <QPointer>
 #include <QStringList>
+#include <QTimer>
 
 #include <deque>
 #include <memory>
+#include <optional>
+#include <utility>
 
 class QAction;
 class QLabel;
@@ -40,7 +45,7 @@ class RecordBar;
 class LiveController : public QObject {
     Q_OBJECT
 public:
-    LiveController(const ConfigDocument* doc, FrameNavigator* nav, PipelineRunner* runner, CameraPanel* cameraPanel,
+    LiveController(ConfigDocument* doc, FrameNavigator* nav, PipelineRunner* runner, CameraPanel* cameraPanel,
                    QWidget* window);
     ~LiveController() override;
 
@@ -49,6 +54,9 @@ public:
     QLabel* statusLabel() const { return statusLabel_; }  // for the status bar
     RecordBar* recordBar() const { return recordBar_; }   // for under the panes
     QAction* reconnectAction() const { return reconnect_; }
+    // "Use the simulated camera's fitted config": offered (a notice with this button) when the
+    // simulated camera opens under a config that does not fit its optics; one undo step.
+    QAction* useFittedConfigAction() const { return useFitted_; }
 
     // Opens camera `source` (CameraCatalog) with the config's frame rate; nothing live changes.
     static CameraOpen openCamera(const QString& source, SimulatedStart start, const Config& config);
@@ -63,6 +71,8 @@ public:
     Camera* camera() const;
     const ReplayBuffer* replay() const { return replay_.get(); }
     int dropped() const { return dropped_; }
+    // The live grab timer's period (ms): 1000 / camera.frame_rate, whatever the playback speed.
+    int grabIntervalMs() const { return grabTimer_.interval(); }
     QString statusText() const;
 
     // The navigator asked for `position`: while live, a tick (grab the newest frame); paused,
@@ -78,6 +88,11 @@ public:
     // After a fault: opens the camera again and goes live.
     void reconnect();
 
+    // Grabs the camera's newest frame into the views (replay buffer and panes while live, the
+    // recording, the panel's histogram): the grab timer's and the panel's calibration's grab. A
+    // fault stops live mode (fail()) and is returned.
+    std::optional<CameraError> grabLive(Frame& frame);
+
 signals:
     void sourceChosen(const QString& source, omnitune::SimulatedStart start);  // Camera > Source
     void frameWanted(int seq);        // show replay frame `seq` (MainWindow::showFrame)
@@ -87,13 +102,17 @@ signals:
     void notice(const QString& title, const QStringList& lines, QAction* button);
 
 private:
-    void grab();
+    void onSourceChosen(const QString& source, SimulatedStart start);
+    void grabTick();
+    void updateGrabTimer();
     void offer(int seq);
     void showPosition(int position);
     void onPlayingChanged(bool playing);
     void onRunFinished();
     void fail(const QString& why);
     void applySettings(QStringList& notes);
+    void offerFittedConfig();
+    void useFittedConfig();
     void giveCameraToPanel();
     void configChanged(const QString& key);
     cv::Mat usedPixels() const;  // the geometry's used ring when it fits the camera, else empty (whole frame)
@@ -102,7 +121,7 @@ private:
     void chooseRecordingFolder();
     QString description() const;
 
-    const ConfigDocument* doc_;
+    ConfigDocument* doc_;
     FrameNavigator* nav_;
     PipelineRunner* runner_;
     QPointer<CameraPanel> cameraPanel_;
@@ -112,8 +131,13 @@ private:
     QAction* record_ = nullptr;
     QAction* stopRecord_ = nullptr;
     QAction* reconnect_ = nullptr;
+    QAction* useFitted_ = nullptr;
+    std::optional<Config> fitted_;  // the simulated camera's fitted config while offered
 
     std::unique_ptr<CameraFrameSource> camera_;  // GUI thread only
+    QTimer grabTimer_;                           // live, or recording while paused
+    // Camera > Live source: the choice start() makes live, and the one that is live.
+    std::optional<std::pair<QString, SimulatedStart>> chosen_, liveSource_;
     std::shared_ptr<ReplayBuffer> replay_;
     std::unique_ptr<CameraRecorder> recorder_;
     bool applySettings_ = false;

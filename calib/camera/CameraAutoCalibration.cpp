@@ -79,6 +79,7 @@ std::optional<CameraError> CameraAutoCalibration::begin()
     command_.clear();
     limitCount_.clear();
     iteration_ = 0;
+    skipped_ = 0;
     reason_.clear();
     for (CameraFeatureId id : kDriven) {
         CameraFeature f;
@@ -133,13 +134,29 @@ bool CameraAutoCalibration::move(CameraFeatureId id, double delta, std::optional
 
 std::optional<CameraError> CameraAutoCalibration::step(CameraAutoIteration& out)
 {
-    if (state_ != CameraAutoState::Running) return std::nullopt;
-    Frame frame;
-    for (int i = 0; i <= options_.skipFrames; ++i)
+    while (state_ == CameraAutoState::Running) {
+        Frame frame;
         if (auto err = camera_.grab(frame)) {
             fail(err->message);
             return err;
         }
+        bool measured = false;
+        if (auto err = take(frame, out, measured)) return err;
+        if (measured) break;
+    }
+    return std::nullopt;
+}
+
+std::optional<CameraError> CameraAutoCalibration::take(const Frame& frame, CameraAutoIteration& out, bool& measured)
+{
+    measured = false;
+    if (state_ != CameraAutoState::Running) return std::nullopt;
+    if (skipped_ < options_.skipFrames) {  // taken before the last write had surely taken effect
+        ++skipped_;
+        return std::nullopt;
+    }
+    skipped_ = 0;
+    measured = true;
     CameraMeasurement m;
     if (auto why = measureCameraFrame(frame.image, usedMask_, options_, m)) {
         fail(*why);

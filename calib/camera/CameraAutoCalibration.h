@@ -62,7 +62,15 @@ public:
     // auto modes off for the features it drives.
     std::optional<CameraError> begin();
     // One iteration (see above). A camera error ends the run (state Failed) and is returned.
+    // Grabs from the camera itself: skip_frames + 1 frames.
     std::optional<CameraError> step(CameraAutoIteration& out);
+    // The same fed one frame at a time by a caller that grabs (the window's live view, so the
+    // frames the calibration looks at reach the panes): the first `skip_frames` frames after an
+    // iteration are only counted; the next is measured (`measured`, `out` filled) and may write.
+    // A frame grabbed elsewhere in between is not counted, which only waits longer.
+    std::optional<CameraError> take(const Frame& frame, CameraAutoIteration& out, bool& measured);
+    // Ends a running run as failed with `reason` (the caller's grab failed).
+    void abort(const std::string& reason) { fail(reason); }
 
     CameraAutoState state() const { return state_; }
     // Why the run failed, in words; empty otherwise.
@@ -90,6 +98,7 @@ private:
     CameraAutoState state_ = CameraAutoState::Idle;
     std::string reason_;
     int iteration_ = 0;
+    int skipped_ = 0;  // frames taken since the last measurement
     PiController exposurePi_, gainPi_, bluePi_, redPi_, brightnessPi_;
     bool exposureActive_ = true;  // which of exposure and gain the MSV drives now
 };

@@ -60,7 +60,11 @@ CameraSettings simulatedStartSettings(SimulatedStart s)
 
 SimulatedCamera::SimulatedCamera(const SimulatedCameraOptions& options) : options_(options), delayRng_(options.seed) {}
 
-SimulatedCamera::~SimulatedCamera() = default;
+SimulatedCamera::~SimulatedCamera()
+{
+    stopRendering_ = true;
+    if (renderThread_.joinable()) renderThread_.join();
+}
 
 std::string SimulatedCamera::description() const
 {
@@ -76,6 +80,7 @@ std::optional<CameraError> SimulatedCamera::open()
         optics_ = std::make_unique<CatadioptricCamera>(opticsCellCameraParams(cell));
         renderer_ = std::make_unique<OpticsRenderer>(*optics_);
         radiance_.assign(std::size_t(std::max(options_.poses, 1)), cv::Mat());
+        renderThread_ = std::thread(&SimulatedCamera::renderAll, this);
     }
     registers_ = effective_ = simulatedStartSettings(options_.start);
     registers_.frameRate = effective_.frameRate = options_.frameRate;
@@ -99,23 +104,45 @@ void SimulatedCamera::close()
     open_ = started_ = false;
 }
 
-const cv::Mat& SimulatedCamera::radiance(int pose)
+void SimulatedCamera::renderAll()
 {
-    cv::Mat& r = radiance_[std::size_t(pose)];
-    if (r.empty()) {
-        OpticsCell cell;
-        cell.image = options_.image;
-        cell.frames = int(radiance_.size());
-        cell.seed = options_.seed;
-        OpticsScene scene = opticsCellScene(cell, pose, *renderer_);
-        scene.light = kRenderLight;
-        scene.noiseSigma = 0;  // the sensor model adds its own
-        renderer_->render(scene).convertTo(r, CV_32FC3, 1.0 / kRenderLight);
-        // The reference cards lie on the top plate, under the hall's light like the floor.
-        r(options_.whiteCard & cv::Rect({}, r.size())).setTo(kWhiteCard);
-        r(options_.blackCard & cv::Rect({}, r.size())).setTo(kBlackCard);
+    for (int pose = 0; pose < int(radiance_.size()) && !stopRendering_; ++pose) {
+        cv::Mat r;
+        try {
+            OpticsCell cell;
+            cell.image = options_.image;
+            cell.frames = int(radiance_.size());
+            cell.seed = options_.seed;
+            OpticsScene scene = opticsCellScene(cell, pose, *renderer_);
+            scene.light = kRenderLight;
+            scene.noiseSigma = 0;  // the sensor model adds its own
+            renderer_->render(scene).convertTo(r, CV_32FC3, 1.0 / kRenderLight);
+            // The reference cards lie on the top plate, under the hall's light like the floor.
+            r(options_.whiteCard & cv::Rect({}, r.size())).setTo(kWhiteCard);
+            r(options_.blackCard & cv::Rect({}, r.size())).setTo(kBlackCard);
+        } catch (const std::exception& e) {
+            const std::lock_guard<std::mutex> lock(renderMutex_);
+            renderError_ = std::string("rendering place ") + std::to_string(pose) + " failed: " + e.what();
+            rendered_.notify_all();
+            return;
+        }
+        const std::lock_guard<std::mutex> lock(renderMutex_);
+        radiance_[std::size_t(pose)] = r;
+        rendered_.notify_all();
     }
-    return r;
+}
+
+bool SimulatedCamera::radiance(int pose, cv::Mat& out, std::string& why)
+{
+    std::unique_lock<std::mutex> lock(renderMutex_);
+    cv::Mat& r = radiance_[std::size_t(pose)];
+    rendered_.wait(lock, [&] { return !r.empty() || !renderError_.empty(); });
+    if (r.empty()) {
+        why = renderError_;
+        return false;
+    }
+    out = r;  // (shared; never written again)
+    return true;
 }
 
 std::optional<CameraError> SimulatedCamera::grab(Frame& out)
@@ -132,12 +159,27 @@ std::optional<CameraError> SimulatedCamera::grab(Frame& out)
     }
     const int pose = (index / std::max(options_.framesPerPose, 1)) % int(radiance_.size());
     cv::RNG noise(std::uint64_t(options_.seed) * 0x9E3779B97F4A7C15ull + std::uint64_t(index) + 1);
-    out.image = exposeSensor(radiance(pose), effective_, options_.sensor, noise);
+    cv::Mat scene;
+    std::string why;
+    if (!radiance(pose, scene, why)) return error(CameraErrorKind::Device, why);
+    out.image = exposeSensor(scene, effective_, options_.sensor, noise);
     out.format = PixelFormat::Bgr8;
     out.index = index;
     out.timestampS = index / options_.frameRate;
     out.camera = effective_;
     return std::nullopt;
+}
+
+std::optional<Config> SimulatedCamera::fittedConfig(const Config& base, std::string* error) const
+{
+    OpticsCell cell;
+    cell.image = options_.image;  // the same camera open() builds: same image size and mirror
+    const OpticsCamera camera = opticsCellCamera(cell, base);
+    if (!camera.calibration || !camera.calibration->ok()) {
+        if (error) *error = camera.calibration && camera.calibration->error ? *camera.calibration->error : "the fit failed";
+        return std::nullopt;
+    }
+    return camera.calibration->config;
 }
 
 std::vector<CameraFeature> SimulatedCamera::features()

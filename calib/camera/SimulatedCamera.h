@@ -6,14 +6,23 @@
 // along a tour of `poses` places, `framesPerPose` frames each, so frames change. A white and a
 // black card sit on the robot's top plate (image centre), where the automatic calibration's
 // default reference regions look. Frames come as fast as they are grabbed; timestamps follow
-// the configured frame rate (no waiting). Deterministic: same options, same frames.
+// the configured frame rate (no waiting). The places are rendered once, in tour order, on a
+// thread of the camera's own started by the first open(), so a grab only waits for a place not
+// rendered yet (the first) instead of stalling the grabbing thread (the window's GUI thread) at
+// every new place. Deterministic: same options, same frames.
 #include "calib/camera/Camera.h"
 #include "calib/camera/SensorModel.h"
 #include "core/CameraSettings.h"
+#include "core/Config.h"
 
+#include <atomic>
+#include <condition_variable>
 #include <deque>
 #include <memory>
+#include <optional>
+#include <mutex>
 #include <string>
+#include <thread>
 
 namespace omnitune {
 
@@ -59,6 +68,12 @@ public:
 
     // What the sensor applies now (the last frame's settings), unlike the registers features() reads.
     const CameraSettings& effectiveSettings() const { return effective_; }
+    // The config a team would fit to this camera's optics (calib/fit/MeasuredCalibration.h:
+    // rim, body, mask, distance map and ball model from the optics' measurements, never its
+    // truth), starting from `base` (colours and thresholds stay). Slow the first time per
+    // image size (the measurements are rendered, about a second), cached after; thread-safe.
+    // Empty with `error` set when the fit fails.
+    std::optional<Config> fittedConfig(const Config& base, std::string* error = nullptr) const;
     // Test hook: the next grab() fails as if the cable were pulled; later calls fail too until open().
     void simulateUnplug() { unplugged_ = true; }
 
@@ -72,12 +87,19 @@ private:
         CameraFeatureId id;
         int value = 0;
     };
-    const cv::Mat& radiance(int pose);
+    // The pose's radiance once the render thread has it; false (and `why`) when rendering failed.
+    bool radiance(int pose, cv::Mat& out, std::string& why);
+    void renderAll();  // the render thread
 
     SimulatedCameraOptions options_;
     std::unique_ptr<CatadioptricCamera> optics_;
     std::unique_ptr<OpticsRenderer> renderer_;
-    std::vector<cv::Mat> radiance_;  // CV_32FC3 per pose, rendered on first use
+    std::vector<cv::Mat> radiance_;  // CV_32FC3 per pose, written once by the render thread (renderMutex_)
+    std::string renderError_;        // why rendering stopped (renderMutex_)
+    std::mutex renderMutex_;
+    std::condition_variable rendered_;
+    std::atomic<bool> stopRendering_{false};
+    std::thread renderThread_;
     CameraSettings registers_;       // what was last written
     CameraSettings effective_;       // what the sensor applies
     std::deque<PendingWrite> pending_;
