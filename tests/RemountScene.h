@@ -9,6 +9,7 @@
 #include "calib/sim/optics/OpticsRenderer.h"
 #include "core/Pipeline.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -66,6 +67,29 @@ inline Tour renderTour(const OpticsCell& cell, const OpticsRenderer& renderer)
         t.truth[i] = toTruthRow(truth, i, cell.ballPresent);
         t.optics.push_back(truth);
     }
+    return t;
+}
+
+// The farthest ground distance (m) of a visible ball whose circle lies inside `g`'s ring: the
+// detector does not look past outer_radius, so that is how far the camera can find a ball.
+inline double ringReachM(const Tour& tour, const GeometryOptions& g)
+{
+    double reach = 0;
+    for (std::size_t i = 0; i < tour.optics.size(); ++i) {
+        const TruthRow& t = tour.truth.at(int(i));
+        if (t.ballVisible && std::hypot(t.px - g.centerX, t.py - g.centerY) + t.radiusPx <= g.outerRadius)
+            reach = std::max(reach, tour.optics[i].distanceM);
+    }
+    return reach;
+}
+
+// `tour` with truth only for the frames whose ball lies within `maxM` m: the other frames are
+// not annotated, so evaluate() leaves them out.
+inline Tour within(const Tour& tour, double maxM)
+{
+    Tour t = tour;
+    for (std::size_t i = 0; i < tour.optics.size(); ++i)
+        if (tour.optics[i].distanceM > maxM) t.truth.erase(int(i));
     return t;
 }
 
