@@ -136,8 +136,13 @@ private slots:
         const std::vector<FrameRow> before = diagnose(renderTour(cell, originalRenderer), c0.config);
         const std::vector<FrameRow> after = diagnose(renderTour(cell, renderer), c1.config);
         const GeometryOptions &g0 = c0.config.geometry, &g1 = c1.config.geometry;
-        qInfo().noquote() << QString("rim before %1 px, outer %2; after %3 px, outer %4")
-                                 .arg(c0.rim.rimRadius).arg(g0.outerRadius).arg(c1.rim.rimRadius).arg(g1.outerRadius);
+        qInfo().noquote() << QString("rim before %1 px at (%2, %3), outer %4; after %5 px at (%6, %7), outer %8; the "
+                                     "optics' rims: %9 px at (%10, %11), %12 px at (%13, %14)")
+                                 .arg(c0.rim.rimRadius).arg(g0.centerX).arg(g0.centerY).arg(g0.outerRadius)
+                                 .arg(c1.rim.rimRadius).arg(g1.centerX).arg(g1.centerY).arg(g1.outerRadius)
+                                 .arg(originalCamera.rimRadiusPx()).arg(originalCamera.rimCentre().x)
+                                 .arg(originalCamera.rimCentre().y).arg(camera.rimRadiusPx()).arg(camera.rimCentre().x)
+                                 .arg(camera.rimCentre().y);
         const double reach0 = ringReachM(before, c0.config), reach1 = ringReachM(after, c1.config);
         qInfo().noquote() << QString("a whole ball inside the ring out to %1 m before, %2 m after").arg(reach0).arg(reach1);
         if (qEnvironmentVariableIsSet("OMNITUNE_REMOUNT_FRAMES"))  // the per-frame table
