@@ -52,6 +52,22 @@ inline CatadioptricCameraParams remounted(CatadioptricCameraParams p)
     return p;
 }
 
+// Where the robot's axis is seen: the centre of the images of floor circles 3 m around the
+// robot (the point the distance map measures from; the mirror rim's mean may lie a little off).
+inline cv::Point2d fieldCentre(const CatadioptricCamera& camera)
+{
+    cv::Point2d sum;
+    int n = 0;
+    for (int k = 0; k < 36; ++k) {
+        const double a = 2 * CV_PI * k / 36;
+        if (const auto p = camera.project({3.0 * std::cos(a), 3.0 * std::sin(a), 0.0})) {
+            sum += *p;
+            ++n;
+        }
+    }
+    return n ? sum / n : cv::Point2d(-1, -1);
+}
+
 struct Tour {
     std::vector<cv::Mat> frames;
     std::map<int, TruthRow> truth;

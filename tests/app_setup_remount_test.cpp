@@ -112,12 +112,12 @@ private slots:
             QTest::mouseClick(seq->nextButton(), Qt::LeftButton);
         };
         applyStep(SetupSequence::CentreRim);
-        // The centre follows the remount (the rim fit lands ~2 px off the optics' rim centre on
-        // both cameras, original and remounted: see calib/remount_diagnosis).
+        // The centre follows the remount, onto the point the field's circles are centred on.
         const GeometryOptions& g = doc->config().geometry;
         QVERIFY(std::hypot(g.centerX - c0.geometry.centerX, g.centerY - c0.geometry.centerY) > 4);
-        QVERIFY2(std::hypot(g.centerX - camera.rimCentre().x, g.centerY - camera.rimCentre().y) < 2.5,
-                 qPrintable(QString("centre %1, %2; rim %3, %4").arg(g.centerX).arg(g.centerY).arg(camera.rimCentre().x).arg(camera.rimCentre().y)));
+        const cv::Point2d axis = fieldCentre(camera);
+        QVERIFY2(std::hypot(g.centerX - axis.x, g.centerY - axis.y) < 1.0,
+                 qPrintable(QString("centre %1, %2; field %3, %4").arg(g.centerX).arg(g.centerY).arg(axis.x).arg(axis.y)));
         applyStep(SetupSequence::Body);
         applyStep(SetupSequence::Mask);  // the auto-mask from the session's frames
         QVERIFY(!doc->config().mask.empty());
