@@ -18,6 +18,7 @@
 #include "core/ConfigParser.h"
 #include "widgets/BallModelPanel.h"
 #include "widgets/ConfigDocument.h"
+#include "widgets/CurveFitPlot.h"
 #include "widgets/DistancePointsModel.h"
 #include "widgets/DistancePointsPanel.h"
 #include "widgets/PaneEditors.h"
@@ -27,6 +28,8 @@
 #include "widgets/SetupSequence.h"
 
 #include <QAction>
+#include <QCheckBox>
+#include <QUndoStack>
 #include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QtTest>
@@ -182,6 +185,55 @@ private slots:
         QVERIFY2(r1.meanErrorM <= r0.meanErrorM + 0.05, qPrintable(numbers));
         QVERIFY2(r1in.withBall >= 60, qPrintable(numbers));
         QVERIFY2(r1in.detectionRatioPct >= r0in.detectionRatioPct - 2.0, qPrintable(numbers));
+    }
+
+    // Issue 11's per-direction ball model: a session whose marks show the ball 8 % bigger towards
+    // 60 deg (an off-axis mirror). Camera > Ball model...: Fit offers the term (the box enabled
+    // and ticked, the residuals plotted with it), Apply writes it; unticked, it writes 0 and 0.
+    void ballModelPanelOffersTheDirectionTerm()
+    {
+        OpticsCell cell = tourCell();
+        const CatadioptricCamera camera(originalMount(cell));
+        const OpticsRenderer renderer(camera);
+        const MeasuredCalibration calibration = calibrateFromMeasurements(Config{}, measureOpticsCamera(renderer));
+        QVERIFY(calibration.ok());
+        const Config c = calibration.config;
+        Tour tour = renderTour(cell, renderer);
+        const double a = 0.08 * std::cos(60 * CV_PI / 180), b = 0.08 * std::sin(60 * CV_PI / 180);
+        for (auto& [frame, row] : tour.truth) {
+            if (!row.ballVisible) continue;
+            const double angle = std::atan2(row.py - c.geometry.centerY, row.px - c.geometry.centerX);
+            row.radiusPx *= 1 + a * std::cos(angle) + b * std::sin(angle);
+        }
+        const QString session = tmp_.filePath("off-axis");
+        QVERIFY(writeSession(session.toStdString(), tour, c));
+        MainWindow window;
+        QVERIFY(showActive(window));
+        QVERIFY(window.openSource(session));
+        QVERIFY(waitForFrame(window, 0));
+        window.findChild<QAction*>("ballModelPanel")->trigger();
+        BallModelPanel* panel = window.ballModel();
+        QVERIFY(panel->isVisible());
+        QVERIFY(!panel->directionBox()->isEnabled());  // nothing fitted yet
+        QTest::mouseClick(panel->findChild<QPushButton*>("ballModelFit"), Qt::LeftButton);
+        QVERIFY2(panel->directionBox()->isEnabled() && panel->directionBox()->isChecked(), qPrintable(panel->status()));
+        QVERIFY2(panel->status().contains("per-direction term offered"), qPrintable(panel->status()));
+        QVERIFY(panel->plot()->plotData().summary.contains("with direction"));
+        if (qEnvironmentVariableIsSet("OMNITUNE_SCREENSHOT_DIR"))
+            window.grab().save(qEnvironmentVariable("OMNITUNE_SCREENSHOT_DIR") + "/ball-model-direction.png");
+        const int steps = window.document()->undoStack()->count();
+        QTest::mouseClick(panel->findChild<QPushButton*>("ballModelApply"), Qt::LeftButton);
+        QCOMPARE(window.document()->undoStack()->count(), steps + 1);
+        const BallModelOptions& ball = window.document()->config().ball;
+        QVERIFY2(std::abs(ball.directionCos - a) < 0.01 && std::abs(ball.directionSin - b) < 0.01,
+                 qPrintable(QString("%1, %2").arg(ball.directionCos).arg(ball.directionSin)));
+        // Unticked: the radial fit alone, the term back to 0 and 0.
+        QTest::mouseClick(panel->directionBox(), Qt::LeftButton);
+        QVERIFY(!panel->directionBox()->isChecked());
+        QVERIFY(panel->plot()->plotData().summary.startsWith("fit: RMS"));
+        QTest::mouseClick(panel->findChild<QPushButton*>("ballModelApply"), Qt::LeftButton);
+        QCOMPARE(window.document()->config().ball.directionCos, 0.0);
+        QCOMPARE(window.document()->config().ball.directionSin, 0.0);
     }
 };
 
