@@ -585,8 +585,12 @@ void MainWindow::showPanel(QWidget* panel)
 
 bool MainWindow::saveAsSession()
 {
+    if (!maybeKeepTruth()) return false;
     const QString folder = saveAsSession_->save(sourcePath_, doc_.config());
-    return !folder.isEmpty() && openSource(folder);
+    if (folder.isEmpty()) return false;
+    // The new session's config.yml holds the edits on screen: opening it asks nothing about them.
+    if (doc_.isDirty()) doc_.discardChanges();
+    return openSource(folder);
 }
 
 void MainWindow::offerSessionForTruth()
