@@ -331,6 +331,8 @@ void MainWindow::buildMenus()
     setupSequence_ = new SetupSequence(this);
     qobject_cast<QBoxLayout*>(centralWidget()->layout())->insertWidget(2, setupSequence_);
     connect(cameraSetup_, &CameraSetup::sequenceRequested, setupSequence_, &SetupSequence::start);
+    // The strip reports each step; earlier notices would only push the panes down.
+    connect(setupSequence_, &SetupSequence::stepChanged, notices_, &NoticeBar::clear);
     connectSetupSteps(*setupSequence_, {&doc_, cameraSetup_, geometryEditor_, paneEditors_->mask(), ballModel_,
                                         paneEditors_->distances(), colours_, [this](QWidget* w) { showPanel(w); },
                                         [this] { return saveConfig(); }});
