@@ -165,6 +165,26 @@ private slots:
         QVERIFY2(result.error->message.find("line 7") != std::string::npos, result.error->message.c_str());
     }
 
+    // A mirror whose metres per pixel run away near the rim (the spherical one): no polynomial
+    // of degree 1..6 rises over the marks, so the map is the marks' own table, monotone.
+    void distanceMapFallsBackToThePointsTable()
+    {
+        std::vector<DistancePoint> pts;
+        for (int i = 0; i < 40; ++i) {
+            const double r = 60 + 4 * i;
+            pts.push_back({r, r < 180 ? 0.01 * r : 1.8 + 0.3 * (r - 180), i + 2});
+        }
+        const DistanceMapFitResult result = fitDistanceMap(pts);
+        QVERIFY2(result.ok(), result.ok() ? "" : result.error->message.c_str());
+        QVERIFY(result.fit.pointsTable);
+        QVERIFY(result.fit.note.find("no polynomial") != std::string::npos);
+        QVERIFY(result.fit.rmsCm < 0.5);
+        DistanceMapOptions options;
+        applyDistanceMapFit(result.fit, options);
+        const DistanceMap map(options);
+        for (double r = 61; r < 215; r += 2) QVERIFY(map.toGround(r + 1) > map.toGround(r));
+    }
+
     void distanceMapRefusesTooFewPoints()
     {
         const std::vector<DistancePoint> pts = {{60, 0.3}, {90, 0.6}, {120, 1.0}, {150, 1.6}};
