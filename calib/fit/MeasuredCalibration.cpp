@@ -88,7 +88,8 @@ MeasuredCalibration calibrateFromMeasurements(const Config& base, const CameraMe
         o.degree = degree;
         o.tableSize = options.tableSize;
         const DistanceMapFitResult fit = fitDistanceMap(points, o);
-        if (fit.ok() && (!best || fit.fit.rmsCm < best->rmsCm * 0.9)) {
+        // Polynomials only: the marks' own table is weighed below (ringMap).
+        if (fit.ok() && !fit.fit.pointsTable && (!best || fit.fit.rmsCm < best->rmsCm * 0.9)) {
             best = fit.fit;
             out.distanceMapDegree = degree;
         }
