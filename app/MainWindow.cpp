@@ -330,9 +330,9 @@ void MainWindow::buildMenus()
     // The guided set-up: a strip above the panes (under the yellow bar).
     setupSequence_ = new SetupSequence(this);
     qobject_cast<QBoxLayout*>(centralWidget()->layout())->insertWidget(2, setupSequence_);
+    // The strip reports each step; the notices from before it would only push the panes down.
+    connect(cameraSetup_, &CameraSetup::sequenceRequested, notices_, &NoticeBar::clear);
     connect(cameraSetup_, &CameraSetup::sequenceRequested, setupSequence_, &SetupSequence::start);
-    // The strip reports each step; earlier notices would only push the panes down.
-    connect(setupSequence_, &SetupSequence::stepChanged, notices_, &NoticeBar::clear);
     connectSetupSteps(*setupSequence_, {&doc_, cameraSetup_, geometryEditor_, paneEditors_->mask(), ballModel_,
                                         paneEditors_->distances(), colours_, [this](QWidget* w) { showPanel(w); },
                                         [this] { return saveConfig(); }});
