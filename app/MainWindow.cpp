@@ -231,6 +231,8 @@ void MainWindow::buildEditors()
     // The guided set-up: a strip above the panes (under the yellow bar).
     setupSequence_ = new SetupSequence(this);
     qobject_cast<QBoxLayout*>(centralWidget()->layout())->insertWidget(2, setupSequence_);
+    // The strip reports each step; the notices from before it would only push the panes down.
+    connect(cameraSetup_, &CameraSetup::sequenceRequested, notices_, &NoticeBar::clear);
     connect(cameraSetup_, &CameraSetup::sequenceRequested, setupSequence_, &SetupSequence::start);
     connectSetupSteps(*setupSequence_, {&doc_, cameraSetup_, geometryEditor_, paneEditors_->mask(), ballModel_,
                                         paneEditors_->distances(), colours_, [this](QWidget* w) { showPanel(w); },
@@ -454,8 +456,12 @@ void MainWindow::showPanel(QWidget* panel)
 
 bool MainWindow::saveAsSession()
 {
+    if (!maybeKeepTruth()) return false;
     const QString folder = saveAsSession_->save(sourcePath_, doc_.config());
-    return !folder.isEmpty() && openSource(folder);
+    if (folder.isEmpty()) return false;
+    // The new session's config.yml holds the edits on screen: opening it asks nothing about them.
+    if (doc_.isDirty()) doc_.discardChanges();
+    return openSource(folder);
 }
 
 void MainWindow::offerSessionForTruth()

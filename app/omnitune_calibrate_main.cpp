@@ -307,6 +307,7 @@ int runDistanceMap(const CommandLine& cl, const std::string& out)
     std::cout << "distance-map: " << points.size() << " points from " << *cl.value("points") << ", degree "
               << options.degree << ", " << fixedText(f.minRadiusPx) << ".." << fixedText(f.maxRadiusPx) << " px\n"
               << "  residual RMS " << fixedText(f.rmsCm, 2) << " cm, largest " << fixedText(f.maxAbsCm, 2) << " cm\n";
+    if (!f.note.empty()) std::cout << "  " << f.note << "\n";  // the points' table, not the asked degree
     for (std::size_t i = 0; i < points.size(); ++i)
         std::cout << "  " << fixedText(points[i].radiusPx, 1) << " px  " << fixedText(points[i].distanceM, 3) << " m  fit "
                   << fixedText(f.distanceAt(points[i].radiusPx), 3) << " m  residual " << fixedText(f.residualsCm[i], 2)

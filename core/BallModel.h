@@ -15,6 +15,11 @@ struct BallModelOptions {
     // Side of the validation square over the ball diameter. Below ~0.7 the square sees only the
     // ball's middle; above 1 it takes in the carpet around it and the non-green test fails.
     double squareRatio = 0.75;
+    // Per-direction correction for an off-axis mirror, where the ball looks bigger on one side:
+    // r(d, a) = r(d) * (1 + directionCos*cos(a) + directionSin*sin(a)), a the image angle of the
+    // ball's offset from the mirror centre (atan2(dy, dx), image x right, y down). 0 and 0: none.
+    double directionCos = 0.0;  // ratio
+    double directionSin = 0.0;  // ratio
 };
 
 class BallModel {
@@ -23,8 +28,11 @@ public:
     explicit BallModel(const BallModelOptions& options) : options_(options) {}
 
     double radiusAt(double distancePx) const;
-    // Odd side length (px) of the square that holds a ball at this distance.
+    // With the per-direction correction; exactly radiusAt(distancePx) when it is 0 and 0.
+    double radiusAt(double distancePx, double angleRad) const;
+    // Odd side length (px) of the square that holds a ball at this distance (and direction).
     int squareSizeAt(double distancePx) const;
+    int squareSizeAt(double distancePx, double angleRad) const;
     const BallModelOptions& options() const { return options_; }
 
 private:

@@ -218,6 +218,12 @@ std::vector<ConfigKey> buildSchema()
     s.push_back(doubleKey("ball.square_ratio", "ratio", 0.2, 2, false,
                           "Validation square side over the ball diameter; below ~0.7 it sees only the ball's middle, above 1 carpet enters and the non-green test fails",
                           [](auto& c) -> auto& { return c.ball.squareRatio; }));
+    s.push_back(doubleKey("ball.direction_cos", "ratio", -0.5, 0.5, false,
+                          "Off-axis mirror: r(d) is scaled by 1 + direction_cos*cos(a) + direction_sin*sin(a), a the ball's image "
+                          "angle about the centre (atan2(dy, dx), y down); 0 = the same in every direction",
+                          [](auto& c) -> auto& { return c.ball.directionCos; }));
+    s.push_back(doubleKey("ball.direction_sin", "ratio", -0.5, 0.5, false, "Sine term of the per-direction correction (see ball.direction_cos)",
+                          [](auto& c) -> auto& { return c.ball.directionSin; }));
 
     // edges
     s.push_back(intKey("edges.canny_low", "gradient", 0, 1020, true, "Canny low threshold on the L1 gradient |dx|+|dy|: edges grow along pixels above it. On the "

@@ -165,6 +165,26 @@ private slots:
         QVERIFY2(result.error->message.find("line 7") != std::string::npos, result.error->message.c_str());
     }
 
+    // A mirror whose metres per pixel run away near the rim (the spherical one): no polynomial
+    // of degree 1..6 rises over the marks, so the map is the marks' own table, monotone.
+    void distanceMapFallsBackToThePointsTable()
+    {
+        std::vector<DistancePoint> pts;
+        for (int i = 0; i < 40; ++i) {
+            const double r = 60 + 4 * i;
+            pts.push_back({r, r < 180 ? 0.01 * r : 1.8 + 0.3 * (r - 180), i + 2});
+        }
+        const DistanceMapFitResult result = fitDistanceMap(pts);
+        QVERIFY2(result.ok(), result.ok() ? "" : result.error->message.c_str());
+        QVERIFY(result.fit.pointsTable);
+        QVERIFY(result.fit.note.find("no polynomial") != std::string::npos);
+        QVERIFY(result.fit.rmsCm < 0.5);
+        DistanceMapOptions options;
+        applyDistanceMapFit(result.fit, options);
+        const DistanceMap map(options);
+        for (double r = 61; r < 215; r += 2) QVERIFY(map.toGround(r + 1) > map.toGround(r));
+    }
+
     void distanceMapRefusesTooFewPoints()
     {
         const std::vector<DistancePoint> pts = {{60, 0.3}, {90, 0.6}, {120, 1.0}, {150, 1.6}};
@@ -221,7 +241,7 @@ private slots:
         std::vector<BallSample> samples;
         for (int i = 0; i < 40; ++i) {
             const double d = where(rng);
-            samples.push_back({d, model.radiusAt(d) + noise(rng), i});
+            samples.push_back({d, model.radiusAt(d) + noise(rng), i, std::nullopt});
         }
         const BallModelFitResult result = fitBallModel(samples);
         QVERIFY(result.ok());
@@ -233,6 +253,57 @@ private slots:
         applyBallModelFit(result.fit, written);
         QCOMPARE(written.c0, result.fit.c0);
         QCOMPARE(written.c2, result.fit.c2);
+    }
+
+    // An off-axis mirror: the ball 8 % bigger towards 60 deg. The fit recovers the term, offers
+    // it, and core/BallModel evaluates what it writes; on-axis samples get no offer.
+    void ballModelRecoversOffAxisTerm()
+    {
+        BallModelOptions truth;  // the thesis' curve with a known per-direction term
+        truth.directionCos = 0.08 * std::cos(60 * CV_PI / 180);
+        truth.directionSin = 0.08 * std::sin(60 * CV_PI / 180);
+        truth.maxRadius = 100;
+        const BallModel model(truth);
+        std::mt19937 rng(9);
+        std::normal_distribution<double> noise(0.0, 0.2);
+        std::uniform_real_distribution<double> where(75.0, 235.0), angle(-CV_PI, CV_PI);
+        std::vector<BallSample> offAxis, onAxis;
+        for (int i = 0; i < 60; ++i) {
+            const double d = where(rng), a = angle(rng), n = noise(rng);
+            offAxis.push_back({d, model.radiusAt(d, a) + n, i, a});
+            onAxis.push_back({d, model.radiusAt(d) + n, i, a});
+        }
+        const BallModelFitResult result = fitBallModel(offAxis);
+        QVERIFY(result.ok());
+        QVERIFY(result.fit.direction);
+        QVERIFY2(result.fit.directionOffered, result.fit.directionNote.c_str());
+        const BallModelFit::Direction& dir = *result.fit.direction;
+        QVERIFY2(std::abs(dir.cosTerm - truth.directionCos) < 0.01 && std::abs(dir.sinTerm - truth.directionSin) < 0.01,
+                 qPrintable(QString("%1, %2").arg(dir.cosTerm).arg(dir.sinTerm)));
+        QVERIFY(dir.rmsPx < 0.3 && result.fit.rmsPx > 0.5);  // the radial fit alone cannot follow it
+        BallModelOptions written;
+        written.maxRadius = 100;
+        applyBallModelFit(result.fit, written, true);
+        const BallModel fitted(written);
+        for (double d = 95; d <= 215; d += 30)  // inside the samples' span, away from its ends
+            for (double a = -3; a <= 3; a += 1)
+                QVERIFY2(std::abs(fitted.radiusAt(d, a) - model.radiusAt(d, a)) < 0.2,
+                         qPrintable(QString("at %1 px, %2 rad: %3 vs %4").arg(d).arg(a).arg(fitted.radiusAt(d, a)).arg(model.radiusAt(d, a))));
+        // Without the term: written back as 0 and 0, and the angle changes nothing, bit for bit.
+        applyBallModelFit(result.fit, written);
+        QCOMPARE(written.directionCos, 0.0);
+        QCOMPARE(written.directionSin, 0.0);
+        const BallModel radial(written);
+        for (double d = 80; d <= 230; d += 30) QCOMPARE(radial.radiusAt(d, 1.3), radial.radiusAt(d));
+        QCOMPARE(radial.squareSizeAt(150, 1.3), radial.squareSizeAt(150));
+
+        const BallModelFitResult plain = fitBallModel(onAxis);
+        QVERIFY(plain.ok());
+        QVERIFY2(!plain.fit.directionOffered, plain.fit.directionNote.c_str());
+        // Samples from one side only cannot tell a direction from a distance.
+        std::vector<BallSample> oneSide = offAxis;
+        for (BallSample& s : oneSide) s.angleRad = 0.3 * *s.angleRad / CV_PI;
+        QVERIFY(!fitBallModel(oneSide).fit.direction);
     }
 
     void ballModelRefusesTooLittle()

@@ -4,7 +4,9 @@
 // whole-session run found balls, from its accepted detections; the fit r(d) (calib/fit/
 // BallModelFit, the same as omnitune-calibrate ball-model) with the samples and residuals in
 // a plot and the RMS in px; Apply writes the coefficients as one undo step. A fit that cannot
-// be made (too few samples, too short a span) says why and changes nothing.
+// be made (too few samples, too short a span) says why and changes nothing. When the residuals
+// depend on the ball's direction (an off-axis mirror), the per-direction term is offered: the
+// box is enabled and ticked, the plot shows the residuals with it, Apply writes it too.
 #include "calib/eval/Evaluation.h"
 #include "calib/fit/BallModelFit.h"
 #include "widgets/CameraSetup.h"
@@ -41,12 +43,14 @@ public:
     CurveFitPlot* plot() const { return plot_; }
     QString status() const;
     const std::optional<BallModelFit>& lastFit() const { return fit_; }
+    QCheckBox* directionBox() const { return useDirection_; }
 
 signals:
     void message(const QString& text);  // for the status bar
 
 private:
-    void refresh();  // the samples without a fit, after the truth or the detections changed
+    void refresh();   // the samples without a fit, after the truth or the detections changed
+    void showFit();   // fit_ on the plot and in the status, with or without the direction term
 
     ConfigDocument* doc_;
     const TruthDocument* truth_;
@@ -56,6 +60,7 @@ private:
     CurveFitPlot* plot_;
     QLabel* status_;
     QCheckBox* useDetections_;
+    QCheckBox* useDirection_;
     QPushButton* fitButton_;
     QPushButton* applyButton_;
 };

@@ -42,7 +42,10 @@ void CurveFitPlot::paintEvent(QPaintEvent*)
     xMax *= 1.05;
     yMax *= 1.1;
     const QFontMetrics fm(font());
-    const QRectF area(kMargin, 4 + fm.height(), width() - kMargin - 8, height() - 8 - 2 * fm.height());
+    // Wide enough for the y axis' largest number and its unit ("21 px" was cut to "1 px").
+    const QString yTop = QStringLiteral("%1 %2").arg(yMax, 0, 'f', yMax < 10 ? 1 : 0).arg(data_.yUnit);
+    const int margin = std::max(kMargin, fm.horizontalAdvance(yTop) + 6);
+    const QRectF area(margin, 4 + fm.height(), width() - margin - 8, height() - 8 - 2 * fm.height());
     const QRectF top(area.left(), area.top(), area.width(), area.height() * (1 - kResidualShare) - 6);
     const QRectF bottom(area.left(), top.bottom() + 12, area.width(), area.bottom() - top.bottom() - 12);
     const auto x = [&](double v) { return area.left() + v / xMax * area.width(); };
@@ -51,8 +54,8 @@ void CurveFitPlot::paintEvent(QPaintEvent*)
     p.drawRect(top);
     p.drawRect(bottom);
     p.setPen(Qt::lightGray);
-    const QRectF yLabel(0, top.top(), kMargin - 3, fm.height());
-    p.drawText(yLabel, Qt::AlignRight, QStringLiteral("%1 %2").arg(yMax, 0, 'f', yMax < 10 ? 1 : 0).arg(data_.yUnit));
+    const QRectF yLabel(0, top.top(), margin - 3, fm.height());
+    p.drawText(yLabel, Qt::AlignRight, yTop);
     p.drawText(yLabel.translated(0, top.height() - fm.height()), Qt::AlignRight, QStringLiteral("0 %1").arg(data_.yUnit));
     p.drawText(QRectF(area.left(), area.bottom() + 2, area.width(), fm.height()), Qt::AlignHCenter,
                tr("%1, 0 to %2 %3").arg(data_.xName).arg(xMax, 0, 'f', 0).arg(data_.xUnit));
@@ -84,9 +87,9 @@ void CurveFitPlot::paintEvent(QPaintEvent*)
     for (std::size_t i = 0; i < samples.size(); ++i)
         p.drawEllipse(QPointF(x(samples[i].x()), mid - data_.residuals[i] * perUnit), 2.5, 2.5);
     p.setPen(Qt::lightGray);
-    p.drawText(QRectF(0, bottom.top(), kMargin - 3, fm.height()), Qt::AlignRight,
+    p.drawText(QRectF(0, bottom.top(), margin - 3, fm.height()), Qt::AlignRight,
                QStringLiteral("%1 %2").arg(largest, 0, 'f', 0).arg(data_.residualUnit));
-    p.drawText(QRectF(0, mid - fm.height() / 2.0, kMargin - 3, fm.height()), Qt::AlignRight, QStringLiteral("0"));
+    p.drawText(QRectF(0, mid - fm.height() / 2.0, margin - 3, fm.height()), Qt::AlignRight, QStringLiteral("0"));
 }
 
 }  // namespace omnitune

@@ -197,7 +197,8 @@ bool DistancePointsPanel::fit()
     plot_->setData(points, result.fit);
     report(tr("Distance map fitted to %1 points: RMS %2 cm, largest %3 cm; %4 radii from %5 to %6 px written (Ctrl+Z undoes)")
                .arg(points.size()).arg(result.fit.rmsCm, 0, 'f', 1).arg(result.fit.maxAbsCm, 0, 'f', 1)
-               .arg(result.fit.tableRadiiPx.size()).arg(result.fit.minRadiusPx, 0, 'f', 0).arg(result.fit.maxRadiusPx, 0, 'f', 0),
+               .arg(result.fit.tableRadiiPx.size()).arg(result.fit.minRadiusPx, 0, 'f', 0).arg(result.fit.maxRadiusPx, 0, 'f', 0) +
+               (result.fit.note.empty() ? QString() : QStringLiteral("; ") + QString::fromStdString(result.fit.note)),
            false);
     return true;
 }

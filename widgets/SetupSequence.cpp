@@ -33,7 +33,8 @@ const StepText kSteps[] = {
      QT_TRANSLATE_NOOP("SetupSequence", "Auto-mask")},
     {QT_TRANSLATE_NOOP("SetupSequence", "Ball model"),
      QT_TRANSLATE_NOOP("SetupSequence", "Mark balls at several distances (Truth > Mark ground truth, T: click the centre, "
-                                        "drag the radius) or run the whole session; then fit the expected radius r(d) in "
+                                        "drag the radius; an image folder or video is first saved as a session, which "
+                                        "marking offers) or run the whole session; then fit the expected radius r(d) in "
                                         "the Ball model panel."),
      QT_TRANSLATE_NOOP("SetupSequence", "Fit ball model")},
     {QT_TRANSLATE_NOOP("SetupSequence", "Distance map"),

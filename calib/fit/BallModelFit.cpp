@@ -15,7 +15,8 @@ std::vector<BallSample> ballSamplesFromTruth(const std::map<int, TruthRow>& trut
     std::vector<BallSample> samples;
     for (const auto& [frame, row] : truth)
         if (row.ballVisible && row.radiusPx > 0)
-            samples.push_back({std::hypot(row.px - centre.x, row.py - centre.y), row.radiusPx, frame});
+            samples.push_back({std::hypot(row.px - centre.x, row.py - centre.y), row.radiusPx, frame,
+                               std::atan2(row.py - centre.y, row.px - centre.x)});
     return samples;
 }
 
@@ -26,10 +27,74 @@ std::vector<BallSample> ballSamplesFromDetections(const std::vector<FrameOutcome
     for (const FrameOutcome& o : outcomes) {
         const BallDetection& d = o.detection;
         if (o.processed && d.found && d.radiusPx > 0 && !truth.count(o.frame))
-            samples.push_back({std::hypot(d.px - centre.x, d.py - centre.y), d.radiusPx, o.frame});
+            samples.push_back({std::hypot(d.px - centre.x, d.py - centre.y), d.radiusPx, o.frame,
+                               std::atan2(d.py - centre.y, d.px - centre.x)});
     }
     return samples;
 }
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Widest gap (deg) between the angles of the samples that have one.
+double widestGapDeg(const std::vector<BallSample>& samples)
+{
+    std::vector<double> a;
+    for (const BallSample& s : samples)
+        if (s.angleRad) a.push_back(std::remainder(*s.angleRad, 2 * kPi) * 180 / kPi);
+    if (a.size() < 2) return 360.0;
+    std::sort(a.begin(), a.end());
+    double gap = a.front() + 360 - a.back();
+    for (std::size_t i = 1; i < a.size(); ++i) gap = std::max(gap, a[i] - a[i - 1]);
+    return gap;
+}
+
+// r = p(d) * (1 + u cos a + v sin a), alternating two linear fits: p on r / (1 + ...), then
+// (u, v) on r / p(d) - 1. Samples without an angle count with the factor 1.
+BallModelFit::Direction fitDirection(const std::vector<BallSample>& samples)
+{
+    BallModelFit::Direction dir;
+    std::vector<double> d, scaled;
+    for (int round = 0; round < 8; ++round) {
+        d.clear();
+        scaled.clear();
+        for (const BallSample& s : samples) {
+            const double f = s.angleRad ? 1.0 + dir.cosTerm * std::cos(*s.angleRad) + dir.sinTerm * std::sin(*s.angleRad) : 1.0;
+            d.push_back(s.distancePx);
+            scaled.push_back(s.radiusPx / f);
+        }
+        const std::vector<double> c = fitPolynomial(d, scaled, 2);
+        dir.c0 = c[0];
+        dir.c1 = c[1];
+        dir.c2 = c[2];
+        // 2x2 normal equations of q = u cos a + v sin a.
+        double cc = 0, cs = 0, ss = 0, qc = 0, qs = 0;
+        for (const BallSample& s : samples) {
+            if (!s.angleRad) continue;
+            const double p = dir.c0 + dir.c1 * s.distancePx + dir.c2 * s.distancePx * s.distancePx;
+            if (!(p > 0)) continue;
+            const double q = s.radiusPx / p - 1, ca = std::cos(*s.angleRad), sa = std::sin(*s.angleRad);
+            cc += ca * ca;
+            cs += ca * sa;
+            ss += sa * sa;
+            qc += q * ca;
+            qs += q * sa;
+        }
+        const double det = cc * ss - cs * cs;
+        if (!(std::abs(det) > 1e-9)) break;
+        dir.cosTerm = (qc * ss - qs * cs) / det;
+        dir.sinTerm = (qs * cc - qc * cs) / det;
+    }
+    for (const BallSample& s : samples) {
+        const double p = dir.c0 + dir.c1 * s.distancePx + dir.c2 * s.distancePx * s.distancePx;
+        dir.residualsPx.push_back(s.radiusPx - (s.angleRad ? dir.radiusAt(s.distancePx, *s.angleRad) : p));
+    }
+    dir.rmsPx = rootMeanSquare(dir.residualsPx);
+    return dir;
+}
+
+}  // namespace
 
 BallModelFitResult fitBallModel(const std::vector<BallSample>& samples, const BallModelFitOptions& options)
 {
@@ -80,14 +145,44 @@ BallModelFitResult fitBallModel(const std::vector<BallSample>& samples, const Ba
     fit.maxAbsPx = maxAbsolute(fit.residualsPx);
     for (std::size_t i = 0; i < fit.residualsPx.size(); ++i)
         if (fit.worstSample < 0 && std::abs(fit.residualsPx[i]) == fit.maxAbsPx) fit.worstSample = int(i);
+
+    // The per-direction term, offered only when the residuals show it.
+    const auto withAngle = std::count_if(samples.begin(), samples.end(), [](const BallSample& s) { return bool(s.angleRad); });
+    const double gap = widestGapDeg(samples);
+    if (withAngle < options.minDirectionSamples) {
+        fit.directionNote = "no per-direction term: " + std::to_string(withAngle) + " samples with a direction, " +
+                            std::to_string(options.minDirectionSamples) + " needed";
+    } else if (gap > options.maxDirectionGapDeg) {
+        fit.directionNote = "no per-direction term: the samples leave a " + fixedText(gap) + " deg gap around the centre";
+    } else {
+        fit.direction = fitDirection(samples);
+        const BallModelFit::Direction& dir = *fit.direction;
+        const double gain = fit.rmsPx > 0 ? 1.0 - dir.rmsPx / fit.rmsPx : 0.0;
+        fit.directionOffered = dir.amplitude() >= options.minDirectionAmplitude && gain >= options.minDirectionRmsGain;
+        fit.directionNote = std::string(fit.directionOffered ? "per-direction term offered" : "no per-direction term needed") +
+                            ": the ball is " + fixedText(100 * dir.amplitude()) + " % bigger on one side (at " +
+                            fixedText(std::atan2(dir.sinTerm, dir.cosTerm) * 180 / kPi) + " deg), RMS " +
+                            fixedText(fit.rmsPx) + " -> " + fixedText(dir.rmsPx) + " px with it";
+    }
     return result;
 }
 
-void applyBallModelFit(const BallModelFit& fit, BallModelOptions& ball)
+void applyBallModelFit(const BallModelFit& fit, BallModelOptions& ball, bool withDirection)
 {
+    if (withDirection && fit.direction) {
+        const BallModelFit::Direction& dir = *fit.direction;
+        ball.c0 = dir.c0;
+        ball.c1 = dir.c1;
+        ball.c2 = dir.c2;
+        ball.directionCos = dir.cosTerm;
+        ball.directionSin = dir.sinTerm;
+        return;
+    }
     ball.c0 = fit.c0;
     ball.c1 = fit.c1;
     ball.c2 = fit.c2;
+    ball.directionCos = 0.0;
+    ball.directionSin = 0.0;
 }
 
 }  // namespace omnitune

@@ -38,7 +38,7 @@ BallSamplesParse loadBallSamples(const std::string& path)
 std::vector<BallSample> toBallSamples(const std::vector<BallSampleRow>& rows, const DistanceMap& map)
 {
     std::vector<BallSample> samples;
-    for (const auto& r : rows) samples.push_back({r.inMetres ? map.ballPixels(r.distance) : r.distance, r.radiusPx, -1});
+    for (const auto& r : rows) samples.push_back({r.inMetres ? map.ballPixels(r.distance) : r.distance, r.radiusPx, -1, std::nullopt});
     return samples;
 }
 

@@ -3,9 +3,12 @@
 #include "calib/fit/FitText.h"
 #include "calib/fit/Polynomial.h"
 #include "calib/fit/Residuals.h"
+#include "core/DistanceMap.h"
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -22,9 +25,21 @@ std::string pointName(const DistancePoint& p)
 
 }  // namespace
 
-double DistanceMapFit::distanceAt(double radiusPx) const { return evaluatePolynomial(coefficients, radiusPx); }
+double DistanceMapFit::distanceAt(double radiusPx) const
+{
+    if (!pointsTable) return evaluatePolynomial(coefficients, radiusPx);
+    DistanceMapOptions table;
+    table.pixelRadii = tableRadiiPx;
+    table.groundDistances = tableDistancesM;
+    return DistanceMap(table).toGround(radiusPx);
+}
 
-DistanceMapFitResult fitDistanceMap(const std::vector<DistancePoint>& points, const DistanceMapFitOptions& options)
+namespace {
+
+// `suggest`: a fit that bends back names the degrees that do not (each tried without suggesting).
+// `anotherRises` (may be null): set when a bent fit found another degree that rises.
+DistanceMapFitResult fitAtDegree(const std::vector<DistancePoint>& points, const DistanceMapFitOptions& options, bool suggest,
+                                 bool* anotherRises = nullptr)
 {
     DistanceMapFitResult result;
     const int degree = options.degree;
@@ -83,10 +98,23 @@ DistanceMapFitResult fitDistanceMap(const std::vector<DistancePoint>& points, co
         i = j;
     }
     if (!bends.empty()) {
+        // Name the degrees that do rise over the span: the user's next try.
+        std::string others;
+        for (int d = 1; d <= 6 && suggest; ++d) {
+            if (d == degree) continue;
+            DistanceMapFitOptions o = options;
+            o.degree = d;
+            const DistanceMapFitResult other = fitAtDegree(points, o, false);
+            if (other.ok() && anotherRises) *anotherRises = true;
+            if (other.ok())
+                others += (others.empty() ? "" : ", ") + std::to_string(d) + " (RMS " + fixedText(other.fit.rmsCm) + " cm)";
+        }
         result.error = FitError{FitErrorKind::NotMonotone,
                                 "the fitted distance map is not monotone: it bends back at " + bends +
                                     (near.empty() ? "" : " (points there: " + near + ")") +
-                                    "; check those points, add points around there or lower the degree"};
+                                    (others.empty() ? "; check those points, add points around there or lower the degree"
+                                                    : "; degree " + others + " rises over all the points: try that, or "
+                                                      "check the points there")};
         return result;
     }
     if (fit.distanceAt(fit.minRadiusPx) < 0) {
@@ -112,6 +140,58 @@ DistanceMapFitResult fitDistanceMap(const std::vector<DistancePoint>& points, co
     for (int i = 0; i <= steps; ++i) {
         const double r = fit.minRadiusPx + span * i / steps;
         fit.tableDeviationCm = std::max(fit.tableDeviationCm, 100.0 * std::abs(map.toGround(r) - fit.distanceAt(r)));
+    }
+    return result;
+}
+
+// px: marks this close in radius, out of order in distance, are a tie of clicking, not a contradiction.
+constexpr double kTableTiePx = 1.0;
+
+// The points' mean radius per measured distance (mm), kept where it rises; none when a farther
+// distance is seen clearly nearer than a shorter one.
+std::optional<DistanceMapFit> pointsTable(const std::vector<DistancePoint>& points)
+{
+    std::map<long, std::pair<double, int>> rings;  // mm -> (radius sum, count)
+    for (const DistancePoint& p : points) {
+        auto& r = rings[std::lround(p.distanceM * 1000)];
+        r.first += p.radiusPx;
+        ++r.second;
+    }
+    DistanceMapFit fit;
+    fit.pointsTable = true;
+    for (const auto& [mm, sum] : rings) {
+        const double radius = sum.first / sum.second;
+        if (!fit.tableRadiiPx.empty() && radius < fit.tableRadiiPx.back() - kTableTiePx)
+            return std::nullopt;  // a farther mark seen nearer: a mis-typed distance, not the mirror
+        if (!fit.tableRadiiPx.empty() && radius <= fit.tableRadiiPx.back() + 0.05) continue;  // a tie: one is enough
+        fit.tableRadiiPx.push_back(radius);
+        fit.tableDistancesM.push_back(mm / 1000.0);
+    }
+    if (fit.tableRadiiPx.size() < 3) return std::nullopt;
+    fit.minRadiusPx = fit.tableRadiiPx.front();
+    fit.maxRadiusPx = fit.tableRadiiPx.back();
+    for (const DistancePoint& p : points) fit.residualsCm.push_back(100.0 * (p.distanceM - fit.distanceAt(p.radiusPx)));
+    fit.rmsCm = rootMeanSquare(fit.residualsCm);
+    fit.maxAbsCm = maxAbsolute(fit.residualsCm);
+    return fit;
+}
+
+}  // namespace
+
+DistanceMapFitResult fitDistanceMap(const std::vector<DistancePoint>& points, const DistanceMapFitOptions& options)
+{
+    bool anotherRises = false;
+    DistanceMapFitResult result = fitAtDegree(points, options, true, &anotherRises);
+    // Bent back, and no other degree rises: the points' own table.
+    if (result.error && result.error->kind == FitErrorKind::NotMonotone && !anotherRises) {
+        if (auto table = pointsTable(points)) {
+            table->note = "no polynomial of degree 1..6 rises over all the points, so the map is their mean radius per "
+                          "measured distance (" + std::to_string(table->tableRadiiPx.size()) + " distances), interpolated "
+                          "monotone";
+            DistanceMapFitResult r;
+            r.fit = std::move(*table);
+            return r;
+        }
     }
     return result;
 }

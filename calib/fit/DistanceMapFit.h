@@ -8,6 +8,7 @@
 #include "core/DistanceMap.h"
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace omnitune {
@@ -33,6 +34,11 @@ struct DistanceMapFit {
     std::vector<double> tableRadiiPx;   // what goes into distance_map.pixel_radii
     std::vector<double> tableDistancesM;// and distance_map.ground_distances
     double tableDeviationCm = 0.0;      // largest gap between the table's interpolation and the polynomial
+    // No polynomial of degree 1..6 rises over all the points (a mirror whose metres per pixel
+    // run away near the rim): the table is the points' mean radius per measured distance, as
+    // the thesis' distance table, interpolated monotone; `coefficients` is empty then.
+    bool pointsTable = false;
+    std::string note;                   // how the map was made, when not the asked polynomial
 
     double distanceAt(double radiusPx) const;
 };
@@ -44,6 +50,8 @@ struct DistanceMapFitResult {
     bool ok() const { return !error.has_value(); }
 };
 
+// The asked degree; when it bends back, the error names the degrees that do not, and when no
+// degree rises over the points the fit is the points' table (`pointsTable`).
 DistanceMapFitResult fitDistanceMap(const std::vector<DistancePoint>& points, const DistanceMapFitOptions& options = {});
 
 // Writes the fit's table into the map (pixel_radii, ground_distances); height and ball radius stay.

@@ -88,7 +88,8 @@ MeasuredCalibration calibrateFromMeasurements(const Config& base, const CameraMe
         o.degree = degree;
         o.tableSize = options.tableSize;
         const DistanceMapFitResult fit = fitDistanceMap(points, o);
-        if (fit.ok() && (!best || fit.fit.rmsCm < best->rmsCm * 0.9)) {
+        // Polynomials only: the marks' own table is weighed below (ringMap).
+        if (fit.ok() && !fit.fit.pointsTable && (!best || fit.fit.rmsCm < best->rmsCm * 0.9)) {
             best = fit.fit;
             out.distanceMapDegree = degree;
         }
@@ -143,7 +144,7 @@ MeasuredCalibration calibrateFromMeasurements(const Config& base, const CameraMe
     out.ballSamples.clear();
     double minR = 1e9, maxR = 0;
     for (const BallMark& b : m.balls) {
-        out.ballSamples.push_back({std::hypot(b.x - centre.x, b.y - centre.y), b.radiusPx, -1});
+        out.ballSamples.push_back({std::hypot(b.x - centre.x, b.y - centre.y), b.radiusPx, -1, std::atan2(b.y - centre.y, b.x - centre.x)});
         minR = std::min(minR, b.radiusPx);
         maxR = std::max(maxR, b.radiusPx);
     }

@@ -65,7 +65,7 @@ AutoMaskResult autoMask(const std::vector<cv::Mat>& frames, const GeometryOption
     const int maxChanges = int(std::floor(options.maxChangeShare * n));
     std::array<std::vector<std::uint8_t>, 3> channel;
     for (auto& c : channel) c.resize(std::size_t(n));
-    long ringPixels = 0, judged = 0, moving = 0;
+    long ringPixels = 0, moving = 0;
     for (int y = 0; y < size.height; ++y) {
         if (progress) {
             if (progress->isCancelRequested()) return failure(FitErrorKind::Cancelled, "the auto-mask was cancelled");
@@ -83,22 +83,24 @@ AutoMaskResult autoMask(const std::vector<cv::Mat>& frames, const GeometryOption
             }
             cv::Vec3b m;
             for (int c = 0; c < 3; ++c) m[c] = median(channel[std::size_t(c)]);
-            // A still carpet is field, not robot: it is judged by nothing below.
-            if (lut.isField(lut.classifyBgr(m[0], m[1], m[2]))) continue;
-            ++judged;
             int changes = 0;
             for (int i = 0; i < n; ++i) {
                 const cv::Vec3b p = bgr[std::size_t(i)].at<cv::Vec3b>(y, x);
                 const int d = std::max({std::abs(p[0] - m[0]), std::abs(p[1] - m[1]), std::abs(p[2] - m[2])});
                 if (d > options.changeLevel) ++changes;
             }
-            if (changes > maxChanges)
+            // Whether the field moved is judged on every pixel of the ring: on a plain carpet
+            // only the lines, the ball and other robots change, and their median is carpet.
+            if (changes > maxChanges) {
                 ++moving;
-            else
-                out[x] = 255;
+                continue;
+            }
+            // A still carpet is field, not robot.
+            if (lut.isField(lut.classifyBgr(m[0], m[1], m[2]))) continue;
+            out[x] = 255;
         }
     }
-    if (judged == 0 || double(moving) < options.minMovingShare * double(judged))
+    if (double(moving) < options.minMovingShare * double(ringPixels))
         return failure(FitErrorKind::StaticField,
                        "nothing but carpet moved between the " + std::to_string(n) +
                            " frames: the auto-mask needs frames in which the robot drives or turns");

@@ -20,7 +20,7 @@ struct AutoMaskOptions {
     int minFrames = 4;              // fewer frames cannot tell still from moving
     double changeLevel = 20.0;      // grey levels (largest channel difference) from the pixel's median that count as a change
     double maxChangeShare = 0.10;   // a robot pixel changes in at most this share of the frames (noise, flicker)
-    double minMovingShare = 0.05;   // share of the ring's non-carpet pixels that must change, or the field did not move
+    double minMovingShare = 0.01;   // share of the ring's pixels that must change, or the field did not move
     int openPx = 1;                 // px; specks thinner than this are dropped (a still line pixel, noise)
     int minRegionPx = 25;           // px; robot regions smaller than this are dropped
     int growPx = 2;                 // px; regions grow by this so their blurred borders never reach Canny
