@@ -23,9 +23,7 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-        isolateRecoveryFiles();
+        startWindowTests();
     }
 
     void savedSessionOpensWithTheEditsUnasked()

