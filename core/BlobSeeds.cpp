@@ -3,6 +3,7 @@
 #include "core/BallModel.h"
 #include "core/FillBytes.h"
 #include "core/Geometry.h"
+#include "core/ExpectedRadius.h"
 
 #include <algorithm>
 #include <cmath>
@@ -86,7 +87,7 @@ const std::vector<BlobSeed>& BlobSeeds::find(const cv::Mat& binary, const Geomet
             const int cx = int(std::lround(r.cx));
             const int cy = int(std::lround(r.cy));
             if (!geometry.isUsed(cx, cy)) continue;
-            const double radius = ball.radiusAt(geometry.distanceAt(cx, cy));
+            const double radius = expectedRadiusAt(geometry, ball, cx, cy);
             const double ratio = r.area / (M_PI * radius * radius);
             if (ratio < kMinAreaRatio || ratio > kMaxAreaRatio) continue;
             // Compact: no side longer than the ball (plus a pixel of blur either side).

@@ -2,6 +2,7 @@
 
 #include "core/BallModel.h"
 #include "core/Geometry.h"
+#include "core/ExpectedRadius.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -54,7 +55,7 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
         cand.radiusPx = c[2];
         const bool inside = cand.x >= 0 && cand.y >= 0 && cand.x < binary.cols && cand.y < binary.rows;
         cand.distancePx = inside ? geometry.distanceAt(cand.x, cand.y) : 0.0;
-        cand.expectedRadiusPx = ball.radiusAt(cand.distancePx);
+        cand.expectedRadiusPx = inside ? expectedRadiusAt(geometry, ball, cand.x, cand.y) : ball.radiusAt(0.0);
         if (!inside || !geometry.isUsed(cand.x, cand.y))
             cand.rejected = RejectReason::OutsideArea;
         else if (cand.radiusPx > cand.expectedRadiusPx * options.maxRadiusRatio ||
@@ -69,7 +70,7 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
                 cand.x = q.x;
                 cand.y = q.y;
                 cand.distancePx = geometry.distanceAt(q.x, q.y);
-                cand.expectedRadiusPx = ball.radiusAt(cand.distancePx);
+                cand.expectedRadiusPx = expectedRadiusAt(geometry, ball, q.x, q.y);
             }
         }
         if (cand.rejected == RejectReason::None || !options.skipImplausible)

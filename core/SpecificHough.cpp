@@ -3,12 +3,22 @@
 #include "core/BallModel.h"
 #include "core/FillBytes.h"
 #include "core/Geometry.h"
+#include "core/ExpectedRadius.h"
 
 #include <algorithm>
 #include <climits>
 #include <cmath>
 
 namespace omnitune {
+
+namespace {
+
+// Direction sectors of the voting loci when the ball model has a per-direction term: 11.25 deg
+// each, so the term's change across a sector stays under ~1 % of the radius (a resolution of
+// the table, not a tuning threshold).
+constexpr std::size_t kDirectionSectors = 32;
+
+}  // namespace
 
 SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry& geometry, const BallModel& ball)
     : options_(options), geometry_(&geometry), ball_(&ball)
@@ -21,18 +31,26 @@ SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry
     // For each edge distance d, the centres a ball edge there may belong to: in direction phi
     // from the ray, at the radius r solving r = R(d + r cos phi), about one point per pixel of
     // arc. A few fixed-point steps converge: |dR/dd| is far below 1 for any sane ball model.
+    // With the per-direction term each sector of directions gets its own loci, evaluated at the
+    // sector's middle angle (radiusAt(d, a) is radiusAt(d) without the term).
     const int maxEdgeDistance = int(std::ceil(geometry.options().outerRadius)) + 1;
-    loci_.resize(std::size_t(maxEdgeDistance) + 1);
-    for (int d = 0; d <= maxEdgeDistance; ++d) {
-        const double r0 = ball.radiusAt(d);
-        const int n = std::max(8, int(std::ceil(2.0 * M_PI * r0)));
-        auto& locus = loci_[std::size_t(d)];
-        for (int k = 0; k < n; ++k) {
-            const double phi = 2.0 * M_PI * k / n;
-            double r = r0;
-            for (int it = 0; it < 6 && options.radiusAtCentre; ++it)
-                r = ball.radiusAt(std::max(0.0, d + r * std::cos(phi)));
-            locus.push_back({float(r * std::cos(phi)), float(r * std::sin(phi))});
+    const bool directional = ball.options().directionCos != 0.0 || ball.options().directionSin != 0.0;
+    sectors_ = directional ? kDirectionSectors : 1;
+    lociPerSector_ = std::size_t(maxEdgeDistance) + 1;
+    loci_.resize(sectors_ * lociPerSector_);
+    for (std::size_t s = 0; s < sectors_; ++s) {
+        const double a = -M_PI + 2.0 * M_PI * (double(s) + 0.5) / double(sectors_);
+        for (int d = 0; d <= maxEdgeDistance; ++d) {
+            const double r0 = ball.radiusAt(d, a);
+            const int n = std::max(8, int(std::ceil(2.0 * M_PI * r0)));
+            auto& locus = loci_[s * lociPerSector_ + std::size_t(d)];
+            for (int k = 0; k < n; ++k) {
+                const double phi = 2.0 * M_PI * k / n;
+                double r = r0;
+                for (int it = 0; it < 6 && options.radiusAtCentre; ++it)
+                    r = ball.radiusAt(std::max(0.0, d + r * std::cos(phi)), a);
+                locus.push_back({float(r * std::cos(phi)), float(r * std::sin(phi))});
+            }
         }
     }
 
@@ -86,7 +104,7 @@ BallCandidate SpecificHough::candidateAt(int x, int y, std::int32_t sum, Candida
     c.accumulator = std::round(sum * voteScale_);
     c.distancePx = geometry_->distanceAt(x, y);
     c.area = areaOf(c.distancePx);
-    c.expectedRadiusPx = ball_->radiusAt(c.distancePx);
+    c.expectedRadiusPx = expectedRadiusAt(*geometry_, *ball_, x, y);
     c.radiusPx = c.expectedRadiusPx;
     return c;
 }
@@ -114,7 +132,7 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
     for (const BlobSeed& seed : *seeds) {
         if (int(candidates.size() - first) >= options_.maxCandidates) break;
         // A maximum on the blob already stands for it.
-        const double r = ball_->radiusAt(geometry_->distanceAt(seed.x, seed.y));
+        const double r = expectedRadiusAt(*geometry_, *ball_, seed.x, seed.y);
         bool covered = false;
         for (std::size_t i = first; i < maxima && !covered; ++i)
             covered = std::hypot(candidates[i].x - seed.x, candidates[i].y - seed.y) < 0.5 * r;
@@ -161,7 +179,13 @@ void SpecificHough::vote(const cv::Mat& edges, const cv::Mat& binary)
             if (dist[x] < 0.5f) continue;
             const float nx = float((x - cx0) / dist[x]);  // unit ray from the robot centre
             const float ny = float((s.y - cy0) / dist[x]);
-            const auto& locus = loci_[std::min(std::size_t(cvRound(dist[x])), loci_.size() - 1)];
+            std::size_t sector = 0;
+            if (sectors_ > 1) {
+                const double a = std::atan2(double(ny), double(nx));
+                sector = std::min(sectors_ - 1, std::size_t((a + M_PI) / (2.0 * M_PI) * double(sectors_)));
+            }
+            const auto& locus =
+                loci_[sector * lociPerSector_ + std::min(std::size_t(cvRound(dist[x])), lociPerSector_ - 1)];
             int lastDx = INT_MIN;
             int lastDy = INT_MIN;
             for (const LocusPoint& p : locus) {
@@ -274,7 +298,7 @@ void SpecificHough::findMaxima(int cap)
         return a.y != b.y ? a.y < b.y : a.x < b.x;
     };
     auto suppresses = [&](const Peak& k, const Peak& p) {
-        const double r = options_.suppressionRadii * ball_->radiusAt(geometry_->distanceAt(k.x, k.y));
+        const double r = options_.suppressionRadii * expectedRadiusAt(*geometry_, *ball_, k.x, k.y);
         const double dx = k.x - p.x;
         const double dy = k.y - p.y;
         return dx * dx + dy * dy < r * r;

@@ -99,7 +99,11 @@ private:
     SpecificHoughOptions options_;
     const Geometry* geometry_ = nullptr;
     const BallModel* ball_ = nullptr;
-    std::vector<std::vector<LocusPoint>> loci_;  // by the edge pixel's rounded distance
+    // By direction sector, then the edge pixel's rounded distance: one sector without the ball
+    // model's per-direction term, kDirectionSectors with it (the ball's size changes round the mirror).
+    std::vector<std::vector<LocusPoint>> loci_;
+    std::size_t sectors_ = 1;
+    std::size_t lociPerSector_ = 0;
     cv::Mat weight_;    // CV_8UC1 votes a processed non-green centre gets: 0 outside the processed ring
     cv::Mat maskedWeight_;  // CV_8UC1 votes a masked centre inside the ring gets (maskedCentres), else 0
     std::vector<RowSpan> centreSpans_;  // where a centre may lie: processed, or masked in the ring

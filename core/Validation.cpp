@@ -3,6 +3,7 @@
 #include "core/BallModel.h"
 #include "core/ColorClass.h"
 #include "core/Geometry.h"
+#include "core/ExpectedRadius.h"
 
 #include <algorithm>
 #include <climits>
@@ -375,7 +376,7 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
                        const ColourRoles& roles)
 {
     CV_Assert(classes.type() == CV_8UC1 && edges.type() == CV_8UC1 && classes.size() == edges.size());
-    c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, ball.squareSizeAt(c.distancePx), classes, edges,
+    c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, ball.squareSizeAt(c.distancePx, imageAngleAt(geometry, c.x, c.y)), classes, edges,
                            geometry, options, colour, roles);
     if (c.rejected != RejectReason::None) return;  // already out (outside the area, too large)
     if (options.refuseAtRim && c.distancePx + c.expectedRadiusPx > geometry.options().outerRadius - options.rimMarginPx) {

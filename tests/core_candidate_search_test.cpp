@@ -315,6 +315,34 @@ private slots:
         QVERIFY(near(r.detection.px, r.detection.py, ball, 1.5));
     }
 
+    // An off-axis mirror (issue 11's per-direction ball model): towards +x every ball looks 25 %
+    // bigger than r(d). Without the term the detector expects r(d) there and refuses the ball;
+    // with ball.direction_cos 0.25 every candidate's expected radius carries the term and the
+    // ball is found.
+    void directionTermReachesTheCandidates()
+    {
+        Config c;
+        c.algorithm = Algorithm::Specific;
+        const double d = 120;
+        const double bigger = 1.25 * expectedRadius(c, d);
+        cv::Mat frame = greenField(c);
+        const cv::Point2d p = pointAt(c, d, 0);
+        const cv::Point ball(int(std::lround(p.x)), int(std::lround(p.y)));
+        cv::circle(frame, ball, int(std::lround(bigger)), kOrange, cv::FILLED, cv::LINE_8);
+
+        PipelineResult without;
+        Pipeline(c).process(frame, PixelFormat::Bgr8, without);
+        QVERIFY(!without.detection.found || !near(without.detection.px, without.detection.py, ball));
+
+        c.ball.directionCos = 0.25;
+        PipelineResult with;
+        Pipeline(c).process(frame, PixelFormat::Bgr8, with);
+        QVERIFY(with.detection.found);
+        QVERIFY2(near(with.detection.px, with.detection.py, ball), qPrintable(QString("%1,%2 vs %3,%4 src %5").arg(with.detection.px).arg(with.detection.py).arg(ball.x).arg(ball.y).arg(int(with.candidates[std::size_t(with.detection.candidate)].source))));
+        const BallCandidate& k = with.candidates[std::size_t(with.detection.candidate)];
+        QVERIFY2(std::abs(k.expectedRadiusPx - bigger) < 0.6, qPrintable(QString::number(k.expectedRadiusPx)));
+    }
+
     // A ball whose centre lies behind a masked support rod: with hough.masked_centres the edges
     // vote for the masked centre and the candidate there is judged on the visible part; the
     // thesis' rule (centres on processed pixels only) leaves no candidate at the ball.

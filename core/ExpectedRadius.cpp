@@ -1,0 +1,36 @@
+#include "core/ExpectedRadius.h"
+
+#include "core/BallModel.h"
+#include "core/Geometry.h"
+
+#include <cmath>
+
+namespace omnitune {
+
+namespace {
+
+bool hasDirectionTerm(const BallModel& ball)
+{
+    return ball.options().directionCos != 0.0 || ball.options().directionSin != 0.0;
+}
+
+}  // namespace
+
+double imageAngleAt(const Geometry& geometry, double x, double y)
+{
+    return std::atan2(y - geometry.options().centerY, x - geometry.options().centerX);
+}
+
+double expectedRadiusAt(const Geometry& geometry, const BallModel& ball, int x, int y)
+{
+    const double d = geometry.distanceAt(x, y);
+    return hasDirectionTerm(ball) ? ball.radiusAt(d, imageAngleAt(geometry, x, y)) : ball.radiusAt(d);
+}
+
+int expectedSquareAt(const Geometry& geometry, const BallModel& ball, int x, int y)
+{
+    const double d = geometry.distanceAt(x, y);
+    return hasDirectionTerm(ball) ? ball.squareSizeAt(d, imageAngleAt(geometry, x, y)) : ball.squareSizeAt(d);
+}
+
+}  // namespace omnitune
