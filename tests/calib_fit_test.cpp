@@ -255,6 +255,33 @@ private slots:
         QCOMPARE(written.c2, result.fit.c2);
     }
 
+    // A camera whose near balls look bigger than ball.max_radius (25 px): applying the fit
+    // raises the bound so that r(d) is not clamped where balls were measured; a fit inside
+    // the bound leaves it.
+    void ballModelKeepsMeasuredRadiiUnclamped()
+    {
+        std::vector<BallSample> samples;
+        for (int i = 0; i < 20; ++i) {
+            const double d = 40.0 + 8.0 * i;
+            samples.push_back({d, 34.0 - 0.12 * d, i, std::nullopt});  // 29.2 px at 40 px
+        }
+        const BallModelFitResult result = fitBallModel(samples);
+        QVERIFY(result.ok());
+        BallModelOptions written;
+        QCOMPARE(written.maxRadius, 25.0);
+        applyBallModelFit(result.fit, written);
+        QVERIFY2(written.maxRadius >= 29.2, qPrintable(QString::number(written.maxRadius)));
+        QVERIFY(std::abs(BallModel(written).radiusAt(40.0) - 29.2) < 0.05);
+
+        BallModelOptions thesis;
+        const BallModel model(thesis);
+        std::vector<BallSample> inside;
+        for (int i = 0; i < 20; ++i) inside.push_back({80.0 + 8.0 * i, model.radiusAt(80.0 + 8.0 * i), i, std::nullopt});
+        BallModelOptions kept;
+        applyBallModelFit(fitBallModel(inside).fit, kept);
+        QCOMPARE(kept.maxRadius, 25.0);
+    }
+
     // An off-axis mirror: the ball 8 % bigger towards 60 deg. The fit recovers the term, offers
     // it, and core/BallModel evaluates what it writes; on-axis samples get no offer.
     void ballModelRecoversOffAxisTerm()

@@ -167,6 +167,25 @@ BallModelFitResult fitBallModel(const std::vector<BallSample>& samples, const Ba
     return result;
 }
 
+namespace {
+
+// The clamp of r(d) must not cut what was measured: a camera whose nearest balls look bigger
+// than ball.max_radius (25 px, the thesis' camera) gets a bound that holds the fitted curve
+// over the samples' span, in its largest direction. It is only ever raised.
+void holdMeasuredRadii(const BallModelFit& fit, BallModelOptions& ball)
+{
+    constexpr int kSteps = 16;  // points along the span; r(d) is a parabola, its ends and middle
+    const double widest = 1.0 + std::hypot(ball.directionCos, ball.directionSin);
+    double largest = 0.0;
+    for (int i = 0; i <= kSteps; ++i) {
+        const double d = fit.minDistancePx + (fit.maxDistancePx - fit.minDistancePx) * i / kSteps;
+        largest = std::max(largest, (ball.c0 + ball.c1 * d + ball.c2 * d * d) * widest);
+    }
+    if (largest > ball.maxRadius) ball.maxRadius = std::ceil(largest);
+}
+
+}  // namespace
+
 void applyBallModelFit(const BallModelFit& fit, BallModelOptions& ball, bool withDirection)
 {
     if (withDirection && fit.direction) {
@@ -176,13 +195,14 @@ void applyBallModelFit(const BallModelFit& fit, BallModelOptions& ball, bool wit
         ball.c2 = dir.c2;
         ball.directionCos = dir.cosTerm;
         ball.directionSin = dir.sinTerm;
-        return;
+    } else {
+        ball.c0 = fit.c0;
+        ball.c1 = fit.c1;
+        ball.c2 = fit.c2;
+        ball.directionCos = 0.0;
+        ball.directionSin = 0.0;
     }
-    ball.c0 = fit.c0;
-    ball.c1 = fit.c1;
-    ball.c2 = fit.c2;
-    ball.directionCos = 0.0;
-    ball.directionSin = 0.0;
+    holdMeasuredRadii(fit, ball);
 }
 
 }  // namespace omnitune
