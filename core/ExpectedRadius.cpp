@@ -27,10 +27,4 @@ double expectedRadiusAt(const Geometry& geometry, const BallModel& ball, int x, 
     return hasDirectionTerm(ball) ? ball.radiusAt(d, imageAngleAt(geometry, x, y)) : ball.radiusAt(d);
 }
 
-int expectedSquareAt(const Geometry& geometry, const BallModel& ball, int x, int y)
-{
-    const double d = geometry.distanceAt(x, y);
-    return hasDirectionTerm(ball) ? ball.squareSizeAt(d, imageAngleAt(geometry, x, y)) : ball.squareSizeAt(d);
-}
-
 }  // namespace omnitune

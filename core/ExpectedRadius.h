@@ -1,10 +1,10 @@
 #pragma once
-// The ball the model expects at an image point: its radius and validation square at the point's
-// distance from the mirror centre and, for an off-axis mirror (ball.direction_cos / _sin), in
-// its direction. Every candidate's expected radius comes from here, so the per-direction term
-// reaches the Hough maxima, the blob seeds, the OpenCV circles and the validation alike.
-// The specific Hough's voting loci stay per distance only (a few per cent of radius, inside
-// the vote's tolerance).
+// The ball the model expects at an image point: its radius at the point's distance from the
+// mirror centre and, for an off-axis mirror (ball.direction_cos / _sin), in its direction.
+// Every candidate's expected radius comes from here, so the per-direction term reaches the Hough
+// maxima, the blob seeds and the OpenCV circles alike; the validation square takes the same
+// direction through imageAngleAt at the candidate's own distance (an OpenCV circle may lie off
+// the image), and the specific Hough's voting loci have direction sectors of their own.
 
 namespace omnitune {
 
@@ -16,7 +16,5 @@ double imageAngleAt(const Geometry& geometry, double x, double y);
 // Expected radius (px) of a ball centred at (x, y); exactly ball.radiusAt(distance) without
 // a direction term (no angle is computed then).
 double expectedRadiusAt(const Geometry& geometry, const BallModel& ball, int x, int y);
-// Odd side (px) of the validation square of a ball centred at (x, y).
-int expectedSquareAt(const Geometry& geometry, const BallModel& ball, int x, int y);
 
 }  // namespace omnitune

@@ -2,8 +2,8 @@
 
 #include "core/BallModel.h"
 #include "core/ColorClass.h"
-#include "core/Geometry.h"
 #include "core/ExpectedRadius.h"
+#include "core/Geometry.h"
 
 #include <algorithm>
 #include <climits>
@@ -376,8 +376,8 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
                        const ColourRoles& roles)
 {
     CV_Assert(classes.type() == CV_8UC1 && edges.type() == CV_8UC1 && classes.size() == edges.size());
-    c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, ball.squareSizeAt(c.distancePx, imageAngleAt(geometry, c.x, c.y)), classes, edges,
-                           geometry, options, colour, roles);
+    const int square = ball.squareSizeAt(c.distancePx, imageAngleAt(geometry, c.x, c.y));
+    c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, square, classes, edges, geometry, options, colour, roles);
     if (c.rejected != RejectReason::None) return;  // already out (outside the area, too large)
     if (options.refuseAtRim && c.distancePx + c.expectedRadiusPx > geometry.options().outerRadius - options.rimMarginPx) {
         c.rejected = RejectReason::OutsideArea;
