@@ -62,11 +62,14 @@ void RunSummary::showResult(const PipelineRun& run)
     const StageTimings& t = run.result.timings;
     averageMs_ = (averageMs_ * averaged_ + t.totalMs) / (averaged_ + 1);
     averaged_ = std::min(averaged_ + 1, 99);  // a running average over about the last 100 frames
-    // Short: the pixel inspector shares the status bar.
-    timing_->setText(tr("ms: seg %1 | bin %2 | edges %3 | Hough %4 | valid. %5 | total %6 (avg %7)")
-                         .arg(t.segmentMs, 0, 'f', 1).arg(t.binaryMs, 0, 'f', 1).arg(t.edgesMs, 0, 'f', 1)
-                         .arg(t.houghMs, 0, 'f', 1).arg(t.validationMs, 0, 'f', 1).arg(t.totalMs, 0, 'f', 1)
-                         .arg(averageMs_, 0, 'f', 1));
+    // Short: status messages share the status bar and must not be cut off; the stages are in
+    // the tooltip.
+    timing_->setText(tr("%1 ms (avg %2)").arg(t.totalMs, 0, 'f', 1).arg(averageMs_, 0, 'f', 1));
+    timing_->setToolTip(tr("This frame, ms: segmentation %1, binary image %2, Canny edges %3, Hough %4, validation %5; "
+                           "total %6, and the running average over about 100 frames %7")
+                            .arg(t.segmentMs, 0, 'f', 1).arg(t.binaryMs, 0, 'f', 1).arg(t.edgesMs, 0, 'f', 1)
+                            .arg(t.houghMs, 0, 'f', 1).arg(t.validationMs, 0, 'f', 1).arg(t.totalMs, 0, 'f', 1)
+                            .arg(averageMs_, 0, 'f', 1));
 }
 
 void RunSummary::setTruth(const QString& text, bool marking)
