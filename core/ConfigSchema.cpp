@@ -463,6 +463,23 @@ std::vector<ConfigKey> buildSchema()
                           "far ring (balls there too), negative lets circles reach past the outer radius",
                           [](auto& c) -> auto& { return c.validation.rimMarginPx; }));
 
+    // validation of a ball touching a field line (issue 9: ball and line are one blob)
+    s.push_back(boolKey("validation.line_rays_unknown", false,
+                        "Circularity rays that leave the candidate's colours into a field line (crossing only the candidate's "
+                        "colours out to line_contact_min_entry, then a line class going on past line_contact_reach) are left out, "
+                        "like rays into a robot: a ball touching a line is judged on the rays that open onto carpet; off: such a "
+                        "ray finds no border (ball and line are one blob) and is a miss",
+                        [](auto& c) -> auto& { return c.validation.lineRaysUnknown; }));
+    s.push_back(doubleKey("validation.line_contact_min_entry", "radii", 0, 10, false,
+                          "line_rays_unknown: the line must start this many expected radii or more from the centre, the ray "
+                          "crossing only the candidate's colours before it; smaller: a line corner whose centre pixel is "
+                          "unclassified counts its own line as contact",
+                          [](auto& c) -> auto& { return c.validation.lineContactMinEntry; }));
+    s.push_back(doubleKey("validation.line_contact_reach", "radii", 1, 10, false,
+                          "line_rays_unknown: how far out (expected radii from the centre) the line class must go on for a ray to "
+                          "have met a line; shorter: a white panel ending at the ball's blurred border counts as a line too",
+                          [](auto& c) -> auto& { return c.validation.lineContactReach; }));
+
     // algorithm
     ConfigKey alg{"algorithm.method", ValueType::Choice, "", 0, 0,
                   "Ball search: specific Hough (4.1), cv::HoughCircles (4.2), or specific then OpenCV when it fails (4.3)",

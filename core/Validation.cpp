@@ -4,6 +4,7 @@
 #include "core/ColorClass.h"
 #include "core/ExpectedRadius.h"
 #include "core/Geometry.h"
+#include "core/LineContact.h"
 
 #include <algorithm>
 #include <climits>
@@ -124,6 +125,8 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
     cv::Point last(INT_MIN, INT_MIN);
     const double rStart = options.firstEdgeOnly || options.circleFit ? 0.5 : rMin;
     bool blocked = false;  // an edge inside the band came first
+    LineContactRay line(c.classes, c.geometry, c.roles, c.x, c.y, ca, sa, options.lineContactMinEntry * c.radius,
+                        options.lineContactReach * c.radius);
     for (double r = rStart; r <= rMax + 1e-9 && !ray.hit && !blocked; r += 0.5) {
         const cv::Point p = c.along(r, ca, sa);
         if (p == last) continue;
@@ -144,6 +147,10 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
             if (!edge) continue;
         } else {
             anyUsed = true;
+            if (options.lineRaysUnknown && line.entersLine(p, r)) {
+                ray.occluded = true;  // left out, like a ray into a robot
+                return ray;
+            }
             if (c.edgeAt(p)) edge = true, edgePixel = p;
             // The ball's green meeting the carpet's green: the binary image has no edge there.
             const bool ballGreen = c.byColour() && c.ballGreenAt(p);

@@ -125,6 +125,16 @@ struct ValidationOptions {
     // tests still apply. Never required.
     std::string ballHint = "none";
     double ballHintMinPct = 15.0;  // %
+
+    // A ray that leaves the candidate's colours into a field line going on past lineContactReach
+    // expected radii is left out of the circularity, like a ray into a robot (core/LineContact.h):
+    // a ball touching a line is judged on the rays that open onto carpet. Off (the thesis): such
+    // a ray finds no border (ball and line are one blob) and counts as a miss.
+    // Only rays that cross the candidate's colours alone from the centre out to
+    // lineContactMinEntry expected radii, and whose line then goes on to lineContactReach.
+    bool lineRaysUnknown = true;
+    double lineContactMinEntry = 0.5;  // expected radii
+    double lineContactReach = 1.5;     // expected radii
 };
 
 // Scores one candidate and sets its `rejected` field (first failing test: too small, then the
