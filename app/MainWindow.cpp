@@ -18,7 +18,6 @@
 #include "widgets/MaskEditor.h"
 #include "widgets/PaneEditors.h"
 #include "widgets/NoticeBar.h"
-#include "widgets/OverlayLegend.h"
 #include "widgets/PipelineView.h"
 #include "widgets/PixelInspector.h"
 #include "widgets/RecordBar.h"
@@ -37,6 +36,7 @@
 #include "widgets/StatusMessages.h"
 #include "widgets/ThresholdPanel.h"
 #include "widgets/TruthMarker.h"
+#include "widgets/WindowDocks.h"
 #include "widgets/WindowMenus.h"
 
 #include <QAction>
@@ -45,10 +45,8 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QHBoxLayout>
 #include <QIcon>
 #include <QLabel>
-#include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSet>
@@ -89,37 +87,10 @@ MainWindow::MainWindow(QWidget* parent)
     layout->addWidget(nav_);
     setCentralWidget(central);
 
-    auto* panelDock = new QDockWidget(tr("Thresholds"), this);
-    panelDock->setObjectName("thresholds");
-    panelDock->setWidget(panel_);
-    addDockWidget(Qt::RightDockWidgetArea, panelDock);
-    // What the marks over the panes mean ("A3 98/100/96"): a tab behind the thresholds.
-    auto* legendDock = new QDockWidget(tr("Legend"), this);
-    legendDock->setObjectName("legend");
-    legendDock->setWidget(new OverlayLegend(legendDock));
-    addDockWidget(Qt::RightDockWidgetArea, legendDock);
-    tabifyDockWidget(panelDock, legendDock);
-    // The colour classes and sampling (issue 10): a tab beside the thresholds.
     colours_ = new ColourEditor(&doc_, view_, this);
-    auto* coloursDock = new QDockWidget(tr("Colours"), this);
-    coloursDock->setObjectName("colours");
-    coloursDock->setWidget(colours_);
-    addDockWidget(Qt::RightDockWidgetArea, coloursDock);
-    tabifyDockWidget(panelDock, coloursDock);
+    docks_ = new WindowDocks(this, panel_, colours_, cameraPanel_, live_);
     connect(this, &MainWindow::runShown, colours_, [this] { colours_->setRun(lastRun_); });
     showMessagesOnStatusBar(this, colours_, &ColourEditor::message);
-    // The live camera's features and its automatic calibration: a tab, shown when a camera opens.
-    auto* cameraDock = new QDockWidget(tr("Camera"), this);
-    cameraDock->setObjectName("camera");
-    cameraDock->setWidget(cameraPanel_);
-    addDockWidget(Qt::RightDockWidgetArea, cameraDock);
-    tabifyDockWidget(panelDock, cameraDock);
-    cameraDock->hide();
-    connect(live_, &LiveController::cameraOpened, cameraDock, [cameraDock] {
-        cameraDock->show();
-        cameraDock->raise();
-    });
-    panelDock->raise();
 
     auto* table = new CandidateTableView(candidates_, this);
     view_->setSideWidget(table);
@@ -222,7 +193,7 @@ void MainWindow::buildEditors()
     connect(colours_->sampler(), &ColourSampler::samplingChanged, this, [this](bool on) {
         if (!on) return;
         paneEditors_->releaseLeftButton();
-        if (auto* dock = findChild<QDockWidget*>("colours")) dock->raise();  // sampling goes to the class selected there
+        docks_->colours()->raise();  // sampling goes to the class selected there
     });
     paneEditors_->distances()->hide();
     ballModel_ = new BallModelPanel(&doc_, &truth_, this);
@@ -440,18 +411,10 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
 
 void MainWindow::showPanel(QWidget* panel)
 {
-    // A tab beside the thresholds from the first use on (docked earlier, its size would squeeze them).
-    auto* dock = qobject_cast<QDockWidget*>(panel->parentWidget());
-    if (!dock) {
-        const QString title = panel == ballModel_ ? tr("Ball model") : tr("Distance map");
-        dock = new QDockWidget(title, this);
-        dock->setObjectName(panel == ballModel_ ? "ballModel" : "distanceMap");
-        dock->setWidget(panel);
-        addDockWidget(Qt::RightDockWidgetArea, dock);
-        if (auto* thresholds = findChild<QDockWidget*>("thresholds")) tabifyDockWidget(thresholds, dock);
-    }
-    dock->show();
-    dock->raise();
+    if (panel == ballModel_)
+        docks_->show(panel, tr("Ball model"), QStringLiteral("ballModel"));
+    else
+        docks_->show(panel, tr("Distance map"), QStringLiteral("distanceMap"));
 }
 
 bool MainWindow::saveAsSession()
@@ -544,12 +507,6 @@ void MainWindow::applyToSession()
         connect(&doc_, &ConfigDocument::changed, sweepPanel_, outdate);
         connect(&doc_, &ConfigDocument::dirtyChanged, sweepPanel_, outdate);
         connect(&truth_, &TruthDocument::changed, sweepPanel_, outdate);  // its ratio and false positives
-        // A tab beside the thresholds: the panes stay in sight (a window used to cover them).
-        auto* dock = new QDockWidget(tr("Whole session"), this);
-        dock->setObjectName("wholeSession");
-        dock->setWidget(sweepPanel_);
-        addDockWidget(Qt::RightDockWidgetArea, dock);
-        if (auto* thresholds = findChild<QDockWidget*>("thresholds")) tabifyDockWidget(thresholds, dock);
     }
     SweepRequest request;
     request.sourcePath = sourcePath_;
@@ -557,9 +514,8 @@ void MainWindow::applyToSession()
     request.savedConfigPath = doc_.path();  // what the file holds, unsaved edits or not
     request.truth = truth_.rows();
     sweepPanel_->start(std::move(request));
-    auto* dock = qobject_cast<QDockWidget*>(sweepPanel_->parentWidget());
-    dock->show();
-    dock->raise();
+    // A tab beside the thresholds: the panes stay in sight (a window used to cover them).
+    docks_->show(sweepPanel_, tr("Whole session"), QStringLiteral("wholeSession"));
 }
 
 void MainWindow::onSessionSweepFinished(std::shared_ptr<const SweepResult> result)

@@ -38,6 +38,7 @@ class SaveAsSession;
 class RecentFiles;
 class RecoveryFile;
 class TruthMarker;
+class WindowDocks;
 class WindowMenus;
 
 class MainWindow : public QMainWindow {
@@ -106,7 +107,7 @@ private:
     void openTruth(const QString& sessionFolder, cv::Size frameSize);  // frameSize: bounds the truth rows
     void chooseSourceFile();
     void offerRecoveredEdits();  // edits an earlier run left unsaved for the current config
-    void showPanel(QWidget* panel);  // the distance map or ball model panel, docked on first use
+    void showPanel(QWidget* panel);  // the distance map or ball model panel (WindowDocks)
     void offerSessionForTruth();  // marking was refused: a non-session source may become one
 
     ConfigDocument doc_;
@@ -118,6 +119,7 @@ private:
     CandidateTableModel* candidates_;
     TruthMarker* marker_;
     WindowMenus* menus_ = nullptr;
+    WindowDocks* docks_ = nullptr;  // the tabs on the right: thresholds, legend, colours, camera, panels
     RecentFiles* recent_ = nullptr;  // the menus' list
     NoticeBar* notices_ = nullptr;
     ConfigFiles* configFiles_ = nullptr;  // open, save, ask; which config a source gets

@@ -373,6 +373,7 @@ private slots:
         editor()->setFlagOverlaps(true);
         window_->pipelineView()->transform()->setZoom(3.0, ball_);
         QVERIFY(waitForColours());
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);  // the shares' new lines laid out
         QVERIFY(window_->grab().save(dir + "/colours.png"));
         auto* scroll = editor()->findChild<QScrollArea*>("colourScroll");
         QVERIFY(scroll);
