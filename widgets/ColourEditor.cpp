@@ -123,7 +123,7 @@ ColourEditor::ColourEditor(ConfigDocument* doc, PipelineView* view, QWidget* par
     overlaps_->setToolTip(tr("Red and white stripes where the boxes of two or more classes hold the pixel's colour: "
                              "the class higher in the list gets it"));
     sharesLabel_->setObjectName("shares");
-    sharesLabel_->setWordWrap(false);  // short lines (refreshShares)
+    sharesLabel_->setWordWrap(false);  // two short lines: a wrapped label in a scroll area may be cut
     vl->addWidget(onlyThis_);
     vl->addWidget(overlaps_);
     vl->addWidget(sharesLabel_);
@@ -268,10 +268,8 @@ void ColourEditor::refreshShares()
     const ColourClasses& cs = classes();
     const bool have = shares_.processed > 0 && shares_.counts.size() == cs.size();
     classList_->setShares(cs, have ? &shares_ : nullptr);
-    // Short lines, not wrapped (a wrapped label in a scroll area may be cut): the tab's width
-    // at 1280 px holds each of them.
-    sharesLabel_->setText(have ? tr("Frame %1, of the processed pixels:\n%2 in no class,\n%3 claimed by two or more "
-                                    "classes\n(%4 px)")
+    sharesLabel_->setText(have ? tr("Frame %1: %2 of the processed pixels in no class,\n%3 claimed by two or more "
+                                    "classes (%4 px)")
                                      .arg(run_ ? run_->frameIndex : -1)
                                      .arg(colourSharePct(shares_.pct(shares_.unclassified)))
                                      .arg(colourSharePct(shares_.pct(shares_.overlapCount)))
