@@ -30,12 +30,12 @@
 #include "widgets/SaveAsSession.h"
 #include "calib/session/Session.h"
 #include "calib/source/SessionSource.h"
-#include "widgets/SessionSweepPanel.h"
 #include "widgets/SetupSequence.h"
 #include "widgets/SetupSteps.h"
 #include "widgets/StatusMessages.h"
 #include "widgets/ThresholdPanel.h"
 #include "widgets/TruthMarker.h"
+#include "widgets/WholeSessionRun.h"
 #include "widgets/WindowDocks.h"
 #include "widgets/WindowMenus.h"
 
@@ -49,7 +49,6 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QSet>
 #include <QStatusBar>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -175,8 +174,8 @@ MainWindow::~MainWindow()
     recovery_ = nullptr;
     doc_.disconnect();
     truth_.disconnect();
-    delete sweepPanel_;  // stops its thread before the members it reports to go
-    sweepPanel_ = nullptr;
+    delete wholeSession_;  // stops its thread before the members it reports to go
+    wholeSession_ = nullptr;
 }
 
 void MainWindow::buildEditors()
@@ -199,6 +198,11 @@ void MainWindow::buildEditors()
     ballModel_ = new BallModelPanel(&doc_, &truth_, this);
     ballModel_->hide();
     showMessagesOnStatusBar(this, ballModel_, &BallModelPanel::message);
+    wholeSession_ = new WholeSessionRun(&doc_, &truth_, nav_, ballModel_, docks_, this);
+    connect(wholeSession_, &WholeSessionRun::rerunRequested, this, &MainWindow::applyToSession);
+    connect(wholeSession_, &WholeSessionRun::finished, this, [this](const QString& text) { statusBar()->showMessage(text, kMessageMs); });
+    connect(wholeSession_, &WholeSessionRun::failed, this,
+            [this](const QString& why) { notices_->add(tr("Apply to whole session failed:"), {why}); });
     // The guided set-up: a strip above the panes (under the yellow bar).
     setupSequence_ = new SetupSequence(this);
     qobject_cast<QBoxLayout*>(centralWidget()->layout())->insertWidget(2, setupSequence_);
@@ -245,7 +249,7 @@ bool MainWindow::openSource(const QString& path)
     menus_->setUpCamera()->setEnabled(true);
     cameraSetup_->setSource(path);
     ballModel_->setDetections({});  // detections of the previous source
-    if (sweepPanel_) sweepPanel_->reset();  // its results belong to the previous source
+    wholeSession_->reset();  // its results belong to the previous source
     nav_->setFrameCount(source_->frameCount());
     nav_->setFrameRate(doc_.config().camera.frameRate);
     marker_->reset(source_->frameCount());
@@ -274,7 +278,7 @@ bool MainWindow::openCamera(const QString& source, SimulatedStart start)
     sourcePath_.clear();  // nothing to re-open: no whole-session sweep, no camera set-up from files
     menus_->applyToSession()->setEnabled(false);
     menus_->setUpCamera()->setEnabled(false);
-    if (sweepPanel_) sweepPanel_->reset();
+    wholeSession_->reset();
     marker_->reset(0);
     openTruth(QString(), cv::Size());
     updateTitle();
@@ -492,53 +496,7 @@ void MainWindow::updateTitle()
 
 void MainWindow::applyToSession()
 {
-    if (sourcePath_.isEmpty()) return;
-    if (!sweepPanel_) {
-        sweepPanel_ = new SessionSweepPanel(nav_, this);
-        connect(sweepPanel_, &SessionSweepPanel::sweepFinished, this, &MainWindow::onSessionSweepFinished);
-        connect(sweepPanel_, &SessionSweepPanel::rerunRequested, this, &MainWindow::applyToSession);
-        // From the first edit or save after a sweep (or during one) its numbers and marks
-        // describe an older pair of configs: say so rather than pass them off as current.
-        const auto outdate = [this] {
-            if (!sweepPanel_->result() && !sweepPanel_->isRunning()) return;
-            sweepPanel_->setOutdated(true);
-            nav_->setMarksOutdated(sweepMarkKinds());
-        };
-        connect(&doc_, &ConfigDocument::changed, sweepPanel_, outdate);
-        connect(&doc_, &ConfigDocument::dirtyChanged, sweepPanel_, outdate);
-        connect(&truth_, &TruthDocument::changed, sweepPanel_, outdate);  // its ratio and false positives
-    }
-    SweepRequest request;
-    request.sourcePath = sourcePath_;
-    request.current = doc_.config();
-    request.savedConfigPath = doc_.path();  // what the file holds, unsaved edits or not
-    request.truth = truth_.rows();
-    sweepPanel_->start(std::move(request));
-    // A tab beside the thresholds: the panes stay in sight (a window used to cover them).
-    docks_->show(sweepPanel_, tr("Whole session"), QStringLiteral("wholeSession"));
-}
-
-void MainWindow::onSessionSweepFinished(std::shared_ptr<const SweepResult> result)
-{
-    if (!result->ok()) {
-        notices_->add(tr("Apply to whole session failed:"), {QString::fromStdString(result->error)});
-        return;
-    }
-    ballModel_->setDetections(result->current);  // more samples for the ball model
-    QVector<FrameMark> marks = sweepMarks(*result);
-    if (result->cancelled) {  // frames the sweep never reached keep what the live pipeline marked
-        QSet<int> visited;
-        for (const FrameOutcome& o : result->current) visited.insert(o.frame);
-        for (const FrameMark& m : nav_->slider()->marks(FrameMarkKind::Detected))
-            if (!visited.contains(m.frame)) marks.push_back(m);
-    }
-    nav_->setMarks(marks, sweepMarkKinds());
-    if (sweepPanel_->isOutdated()) nav_->setMarksOutdated(sweepMarkKinds());
-    statusBar()->showMessage(tr("Whole session: a ball in %1 of %2 frames, %3 changed")
-                                 .arg(detectionCount(result->current))
-                                 .arg(result->visited)
-                                 .arg(result->comparison.changed()),
-                             kMessageMs);
+    if (!sourcePath_.isEmpty()) wholeSession_->start(sourcePath_);
 }
 
 }  // namespace omnitune

@@ -28,9 +28,7 @@ class LiveController;
 class PaneEditors;
 class NoticeBar;
 class PipelineView;
-class SessionSweepPanel;
 class SetupSequence;
-struct SweepResult;
 class ThresholdPanel;
 class RayStrip;
 class RunSummary;
@@ -38,6 +36,7 @@ class SaveAsSession;
 class RecentFiles;
 class RecoveryFile;
 class TruthMarker;
+class WholeSessionRun;
 class WindowDocks;
 class WindowMenus;
 
@@ -142,12 +141,9 @@ private:
     quint64 generation_ = 1;
     std::shared_ptr<const PipelineRun> lastRun_;
 
-    // Apply to whole session: the source path it re-opens in its own thread, the action
-    // (enabled once a source is open) and the results panel, docked on first use.
-    void onSessionSweepFinished(std::shared_ptr<const SweepResult> result);
-    QString sourcePath_;
+    QString sourcePath_;  // the open source (not a camera): Apply to whole session opens it again
     SaveAsSession* saveAsSession_ = nullptr;
-    SessionSweepPanel* sweepPanel_ = nullptr;
+    WholeSessionRun* wholeSession_ = nullptr;  // Apply to whole session and its panel
 };
 
 }  // namespace omnitune
