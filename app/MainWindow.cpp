@@ -18,7 +18,6 @@
 #include "widgets/MaskEditor.h"
 #include "widgets/PaneEditors.h"
 #include "widgets/NoticeBar.h"
-#include "widgets/OverlayLegend.h"
 #include "widgets/PipelineView.h"
 #include "widgets/PixelInspector.h"
 #include "widgets/RecordBar.h"
@@ -31,12 +30,13 @@
 #include "widgets/SaveAsSession.h"
 #include "calib/session/Session.h"
 #include "calib/source/SessionSource.h"
-#include "widgets/SessionSweepPanel.h"
 #include "widgets/SetupSequence.h"
 #include "widgets/SetupSteps.h"
 #include "widgets/StatusMessages.h"
 #include "widgets/ThresholdPanel.h"
 #include "widgets/TruthMarker.h"
+#include "widgets/WholeSessionRun.h"
+#include "widgets/WindowDocks.h"
 #include "widgets/WindowMenus.h"
 
 #include <QAction>
@@ -45,13 +45,10 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QHBoxLayout>
 #include <QIcon>
 #include <QLabel>
-#include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QSet>
 #include <QStatusBar>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -89,37 +86,10 @@ MainWindow::MainWindow(QWidget* parent)
     layout->addWidget(nav_);
     setCentralWidget(central);
 
-    auto* panelDock = new QDockWidget(tr("Thresholds"), this);
-    panelDock->setObjectName("thresholds");
-    panelDock->setWidget(panel_);
-    addDockWidget(Qt::RightDockWidgetArea, panelDock);
-    // What the marks over the panes mean ("A3 98/100/96"): a tab behind the thresholds.
-    auto* legendDock = new QDockWidget(tr("Legend"), this);
-    legendDock->setObjectName("legend");
-    legendDock->setWidget(new OverlayLegend(legendDock));
-    addDockWidget(Qt::RightDockWidgetArea, legendDock);
-    tabifyDockWidget(panelDock, legendDock);
-    // The colour classes and sampling (issue 10): a tab beside the thresholds.
     colours_ = new ColourEditor(&doc_, view_, this);
-    auto* coloursDock = new QDockWidget(tr("Colours"), this);
-    coloursDock->setObjectName("colours");
-    coloursDock->setWidget(colours_);
-    addDockWidget(Qt::RightDockWidgetArea, coloursDock);
-    tabifyDockWidget(panelDock, coloursDock);
+    docks_ = new WindowDocks(this, panel_, colours_, cameraPanel_, live_);
     connect(this, &MainWindow::runShown, colours_, [this] { colours_->setRun(lastRun_); });
     showMessagesOnStatusBar(this, colours_, &ColourEditor::message);
-    // The live camera's features and its automatic calibration: a tab, shown when a camera opens.
-    auto* cameraDock = new QDockWidget(tr("Camera"), this);
-    cameraDock->setObjectName("camera");
-    cameraDock->setWidget(cameraPanel_);
-    addDockWidget(Qt::RightDockWidgetArea, cameraDock);
-    tabifyDockWidget(panelDock, cameraDock);
-    cameraDock->hide();
-    connect(live_, &LiveController::cameraOpened, cameraDock, [cameraDock] {
-        cameraDock->show();
-        cameraDock->raise();
-    });
-    panelDock->raise();
 
     auto* table = new CandidateTableView(candidates_, this);
     view_->setSideWidget(table);
@@ -204,8 +174,8 @@ MainWindow::~MainWindow()
     recovery_ = nullptr;
     doc_.disconnect();
     truth_.disconnect();
-    delete sweepPanel_;  // stops its thread before the members it reports to go
-    sweepPanel_ = nullptr;
+    delete wholeSession_;  // stops its thread before the members it reports to go
+    wholeSession_ = nullptr;
 }
 
 void MainWindow::buildEditors()
@@ -222,12 +192,17 @@ void MainWindow::buildEditors()
     connect(colours_->sampler(), &ColourSampler::samplingChanged, this, [this](bool on) {
         if (!on) return;
         paneEditors_->releaseLeftButton();
-        if (auto* dock = findChild<QDockWidget*>("colours")) dock->raise();  // sampling goes to the class selected there
+        docks_->colours()->raise();  // sampling goes to the class selected there
     });
     paneEditors_->distances()->hide();
     ballModel_ = new BallModelPanel(&doc_, &truth_, this);
     ballModel_->hide();
     showMessagesOnStatusBar(this, ballModel_, &BallModelPanel::message);
+    wholeSession_ = new WholeSessionRun(&doc_, &truth_, nav_, ballModel_, docks_, this);
+    connect(wholeSession_, &WholeSessionRun::rerunRequested, this, &MainWindow::applyToSession);
+    connect(wholeSession_, &WholeSessionRun::finished, this, [this](const QString& text) { statusBar()->showMessage(text, kMessageMs); });
+    connect(wholeSession_, &WholeSessionRun::failed, this,
+            [this](const QString& why) { notices_->add(tr("Apply to whole session failed:"), {why}); });
     // The guided set-up: a strip above the panes (under the yellow bar).
     setupSequence_ = new SetupSequence(this);
     qobject_cast<QBoxLayout*>(centralWidget()->layout())->insertWidget(2, setupSequence_);
@@ -274,7 +249,7 @@ bool MainWindow::openSource(const QString& path)
     menus_->setUpCamera()->setEnabled(true);
     cameraSetup_->setSource(path);
     ballModel_->setDetections({});  // detections of the previous source
-    if (sweepPanel_) sweepPanel_->reset();  // its results belong to the previous source
+    wholeSession_->reset();  // its results belong to the previous source
     nav_->setFrameCount(source_->frameCount());
     nav_->setFrameRate(doc_.config().camera.frameRate);
     marker_->reset(source_->frameCount());
@@ -303,7 +278,7 @@ bool MainWindow::openCamera(const QString& source, SimulatedStart start)
     sourcePath_.clear();  // nothing to re-open: no whole-session sweep, no camera set-up from files
     menus_->applyToSession()->setEnabled(false);
     menus_->setUpCamera()->setEnabled(false);
-    if (sweepPanel_) sweepPanel_->reset();
+    wholeSession_->reset();
     marker_->reset(0);
     openTruth(QString(), cv::Size());
     updateTitle();
@@ -440,18 +415,10 @@ void MainWindow::onRunFinished(std::shared_ptr<const PipelineRun> run)
 
 void MainWindow::showPanel(QWidget* panel)
 {
-    // A tab beside the thresholds from the first use on (docked earlier, its size would squeeze them).
-    auto* dock = qobject_cast<QDockWidget*>(panel->parentWidget());
-    if (!dock) {
-        const QString title = panel == ballModel_ ? tr("Ball model") : tr("Distance map");
-        dock = new QDockWidget(title, this);
-        dock->setObjectName(panel == ballModel_ ? "ballModel" : "distanceMap");
-        dock->setWidget(panel);
-        addDockWidget(Qt::RightDockWidgetArea, dock);
-        if (auto* thresholds = findChild<QDockWidget*>("thresholds")) tabifyDockWidget(thresholds, dock);
-    }
-    dock->show();
-    dock->raise();
+    if (panel == ballModel_)
+        docks_->show(panel, tr("Ball model"), QStringLiteral("ballModel"));
+    else
+        docks_->show(panel, tr("Distance map"), QStringLiteral("distanceMap"));
 }
 
 bool MainWindow::saveAsSession()
@@ -529,60 +496,7 @@ void MainWindow::updateTitle()
 
 void MainWindow::applyToSession()
 {
-    if (sourcePath_.isEmpty()) return;
-    if (!sweepPanel_) {
-        sweepPanel_ = new SessionSweepPanel(nav_, this);
-        connect(sweepPanel_, &SessionSweepPanel::sweepFinished, this, &MainWindow::onSessionSweepFinished);
-        connect(sweepPanel_, &SessionSweepPanel::rerunRequested, this, &MainWindow::applyToSession);
-        // From the first edit or save after a sweep (or during one) its numbers and marks
-        // describe an older pair of configs: say so rather than pass them off as current.
-        const auto outdate = [this] {
-            if (!sweepPanel_->result() && !sweepPanel_->isRunning()) return;
-            sweepPanel_->setOutdated(true);
-            nav_->setMarksOutdated(sweepMarkKinds());
-        };
-        connect(&doc_, &ConfigDocument::changed, sweepPanel_, outdate);
-        connect(&doc_, &ConfigDocument::dirtyChanged, sweepPanel_, outdate);
-        connect(&truth_, &TruthDocument::changed, sweepPanel_, outdate);  // its ratio and false positives
-        // A tab beside the thresholds: the panes stay in sight (a window used to cover them).
-        auto* dock = new QDockWidget(tr("Whole session"), this);
-        dock->setObjectName("wholeSession");
-        dock->setWidget(sweepPanel_);
-        addDockWidget(Qt::RightDockWidgetArea, dock);
-        if (auto* thresholds = findChild<QDockWidget*>("thresholds")) tabifyDockWidget(thresholds, dock);
-    }
-    SweepRequest request;
-    request.sourcePath = sourcePath_;
-    request.current = doc_.config();
-    request.savedConfigPath = doc_.path();  // what the file holds, unsaved edits or not
-    request.truth = truth_.rows();
-    sweepPanel_->start(std::move(request));
-    auto* dock = qobject_cast<QDockWidget*>(sweepPanel_->parentWidget());
-    dock->show();
-    dock->raise();
-}
-
-void MainWindow::onSessionSweepFinished(std::shared_ptr<const SweepResult> result)
-{
-    if (!result->ok()) {
-        notices_->add(tr("Apply to whole session failed:"), {QString::fromStdString(result->error)});
-        return;
-    }
-    ballModel_->setDetections(result->current);  // more samples for the ball model
-    QVector<FrameMark> marks = sweepMarks(*result);
-    if (result->cancelled) {  // frames the sweep never reached keep what the live pipeline marked
-        QSet<int> visited;
-        for (const FrameOutcome& o : result->current) visited.insert(o.frame);
-        for (const FrameMark& m : nav_->slider()->marks(FrameMarkKind::Detected))
-            if (!visited.contains(m.frame)) marks.push_back(m);
-    }
-    nav_->setMarks(marks, sweepMarkKinds());
-    if (sweepPanel_->isOutdated()) nav_->setMarksOutdated(sweepMarkKinds());
-    statusBar()->showMessage(tr("Whole session: a ball in %1 of %2 frames, %3 changed")
-                                 .arg(detectionCount(result->current))
-                                 .arg(result->visited)
-                                 .arg(result->comparison.changed()),
-                             kMessageMs);
+    if (!sourcePath_.isEmpty()) wholeSession_->start(sourcePath_);
 }
 
 }  // namespace omnitune

@@ -28,9 +28,7 @@ class LiveController;
 class PaneEditors;
 class NoticeBar;
 class PipelineView;
-class SessionSweepPanel;
 class SetupSequence;
-struct SweepResult;
 class ThresholdPanel;
 class RayStrip;
 class RunSummary;
@@ -38,6 +36,8 @@ class SaveAsSession;
 class RecentFiles;
 class RecoveryFile;
 class TruthMarker;
+class WholeSessionRun;
+class WindowDocks;
 class WindowMenus;
 
 class MainWindow : public QMainWindow {
@@ -106,7 +106,7 @@ private:
     void openTruth(const QString& sessionFolder, cv::Size frameSize);  // frameSize: bounds the truth rows
     void chooseSourceFile();
     void offerRecoveredEdits();  // edits an earlier run left unsaved for the current config
-    void showPanel(QWidget* panel);  // the distance map or ball model panel, docked on first use
+    void showPanel(QWidget* panel);  // the distance map or ball model panel (WindowDocks)
     void offerSessionForTruth();  // marking was refused: a non-session source may become one
 
     ConfigDocument doc_;
@@ -118,6 +118,7 @@ private:
     CandidateTableModel* candidates_;
     TruthMarker* marker_;
     WindowMenus* menus_ = nullptr;
+    WindowDocks* docks_ = nullptr;  // the tabs on the right: thresholds, legend, colours, camera, panels
     RecentFiles* recent_ = nullptr;  // the menus' list
     NoticeBar* notices_ = nullptr;
     ConfigFiles* configFiles_ = nullptr;  // open, save, ask; which config a source gets
@@ -140,12 +141,9 @@ private:
     quint64 generation_ = 1;
     std::shared_ptr<const PipelineRun> lastRun_;
 
-    // Apply to whole session: the source path it re-opens in its own thread, the action
-    // (enabled once a source is open) and the results panel, docked on first use.
-    void onSessionSweepFinished(std::shared_ptr<const SweepResult> result);
-    QString sourcePath_;
+    QString sourcePath_;  // the open source (not a camera): Apply to whole session opens it again
     SaveAsSession* saveAsSession_ = nullptr;
-    SessionSweepPanel* sweepPanel_ = nullptr;
+    WholeSessionRun* wholeSession_ = nullptr;  // Apply to whole session and its panel
 };
 
 }  // namespace omnitune

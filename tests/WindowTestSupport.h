@@ -2,12 +2,15 @@
 // Shared by the offscreen tests of the workbench window: a scratch copy of the demo session,
 // answering modal message boxes, and waiting (event driven) for a frame's run.
 #include "app/MainWindow.h"
+#include "widgets/CameraSetup.h"
 #include "widgets/ImageView.h"
+#include "widgets/SetupSequence.h"
 
 #include <QAbstractButton>
 #include <QApplication>
 #include <QDirIterator>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -112,6 +115,33 @@ inline bool openWindow(std::unique_ptr<MainWindow>& window, const QString& sessi
     }
     if (beforeOpen) beforeOpen(*window);
     return window->openSource(session) && waitForFrame(*window, 0);
+}
+
+// The frames the set-up's rim, body and mask fits read in the tests: enough for them, and
+// quicker than the 16 a user gets.
+constexpr int kSetupTestFrames = 8;
+
+// The set-up tests' window: shown active at a laptop's size, the set-up's fits reading
+// kSetupTestFrames, `config` opened first when given, then `source` with frame 0 on the panes.
+inline bool openSetupWindow(MainWindow& window, const QString& source, const QString& config = QString())
+{
+    if (!showActive(window)) return false;
+    window.cameraSetup()->frameCount = kSetupTestFrames;
+    if (!config.isEmpty() && !window.openConfig(config)) return false;
+    return window.openSource(source) && waitForFrame(window, 0);
+}
+
+// Clicks the set-up strip's Apply on its current step, which must be `step`, then Next. Empty
+// when the step was applied, else what went wrong (the strip's own text when it refused).
+// `applied`, when given, gets the strip's text after Apply (what it says it did).
+inline QString applySetupStep(SetupSequence& seq, SetupSequence::Step step, QString* applied = nullptr)
+{
+    if (seq.step() != step) return QStringLiteral("the strip is at step %1, not %2").arg(int(seq.step())).arg(int(step));
+    QTest::mouseClick(seq.applyButton(), Qt::LeftButton);
+    if (seq.state(step) != SetupSequence::StepState::Applied) return QStringLiteral("not applied: ") + seq.text();
+    if (applied) *applied = seq.text();
+    QTest::mouseClick(seq.nextButton(), Qt::LeftButton);
+    return QString();
 }
 
 // Drags with the left button on a pane from image point `from` to `to`, through the middle;

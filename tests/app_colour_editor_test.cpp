@@ -373,6 +373,9 @@ private slots:
         editor()->setFlagOverlaps(true);
         window_->pipelineView()->transform()->setZoom(3.0, ball_);
         QVERIFY(waitForColours());
+        // The shares' new lines laid out first (grabbed at once, the picture had them cut).
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        QVERIFY(editor()->sharesLabel()->height() >= editor()->sharesLabel()->sizeHint().height());
         QVERIFY(window_->grab().save(dir + "/colours.png"));
         auto* scroll = editor()->findChild<QScrollArea*>("colourScroll");
         QVERIFY(scroll);

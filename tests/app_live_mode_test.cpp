@@ -4,6 +4,7 @@
 // into the replay buffer, Left / Right step through exactly the buffer's frames, Space goes
 // live again; an unplugged camera stops live mode and its recording (frames kept) with a
 // notice naming it and a Reconnect button that brings it back; a camera that cannot be opened leaves the source on screen.
+// The Camera tab is there only while a camera is open; so is the navigator's live mode.
 #include "calib/camera/SimulatedCamera.h"
 #include "calib/session/SessionReader.h"
 #include "widgets/CameraPanel.h"
@@ -65,6 +66,43 @@ private slots:
         QCOMPARE(w.live()->startRecording(dir.path() + "/run"), QString());
         QTRY_VERIFY_WITH_TIMEOUT(w.live()->recorder()->status().written >= 60, 60000);
         QVERIFY(w.grab().save(shot));
+    }
+
+    void theCameraTabAndLiveModeGoWithTheCamera()
+    {
+        QTemporaryDir dir;
+        const QString session = freshDemo(dir);
+        QVERIFY(!session.isEmpty());
+        MainWindow w;
+        QVERIFY(showActive(w));
+        auto* dock = w.findChild<QDockWidget*>("camera");
+        auto* thresholds = w.findChild<QDockWidget*>("thresholds");
+        QVERIFY(dock && thresholds);
+        QVERIFY(!dock->isVisible());  // no camera yet: no tab saying "No camera"
+        QVERIFY(openSimulatedCamera(w));
+        QVERIFY(dock->isVisible());
+        QTRY_VERIFY(!dock->visibleRegion().isEmpty());  // the tab in front
+        // Live: the navigator plays as live and ticks no frames of its own (the grab timer does).
+        QVERIFY(w.navigator()->isLive());
+        QVERIFY(w.navigator()->isPlaying());
+        QVERIFY(!w.navigator()->isTicking());
+
+        // A recorded source replaces the camera: the tab goes, the thresholds come to the front,
+        // and the navigator plays the recording on its own timer again.
+        QVERIFY(w.openSource(session));
+        QVERIFY(waitForFrame(w, 0));
+        QVERIFY(!w.live()->isOpen());
+        QVERIFY(!dock->isVisible());
+        QTRY_VERIFY(!thresholds->visibleRegion().isEmpty());
+        QVERIFY(!w.navigator()->isLive());
+        QTest::keyClick(&w, Qt::Key_Space);
+        QVERIFY(w.navigator()->isPlaying());
+        QVERIFY(w.navigator()->isTicking());
+        QTest::keyClick(&w, Qt::Key_Space);
+
+        // The camera again: the tab is back.
+        QVERIFY(openSimulatedCamera(w));
+        QVERIFY(dock->isVisible());
     }
 
     void pauseStepsThroughTheReplayBuffer()

@@ -35,10 +35,7 @@ private slots:
         for (const QString& f : QDir(demo + "/frames").entryList({"*.png"}, QDir::Files))
             QVERIFY(QFile::copy(demo + "/frames/" + f, images + "/" + f));
         MainWindow window;
-        QVERIFY(showActive(window));
-        QVERIFY(window.openConfig(demo + "/config.yml"));
-        QVERIFY(window.openSource(images));
-        QVERIFY(waitForFrame(window, 0));
+        QVERIFY(openSetupWindow(window, images, demo + "/config.yml"));
         ConfigDocument* doc = window.document();
         const double edited = doc->config().geometry.innerRadius + 3;
         QVERIFY(!doc->setValue("geometry.inner_radius", edited));

@@ -62,7 +62,7 @@ private slots:
 
         MainWindow window;
         QVERIFY(showActive(window));
-        window.cameraSetup()->frameCount = 8;
+        window.cameraSetup()->frameCount = kSetupTestFrames;
         const auto shoot = [&](const QString& name) {
             if (!qEnvironmentVariableIsSet("OMNITUNE_SCREENSHOT_DIR")) return;
             QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);

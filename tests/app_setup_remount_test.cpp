@@ -98,19 +98,14 @@ private slots:
         QVERIFY(writeSession(session.toStdString(), after, c0));
 
         MainWindow window;
-        QVERIFY(showActive(window));
-        window.cameraSetup()->frameCount = 8;
-        QVERIFY(window.openSource(session));
-        QVERIFY(waitForFrame(window, 0));
+        QVERIFY(openSetupWindow(window, session));
         ConfigDocument* doc = window.document();
         SetupSequence* seq = window.setupSequence();
         window.findChild<QAction*>("setUpCamera")->trigger();
         QVERIFY(seq->isVisible());
         const auto applyStep = [&](SetupSequence::Step step) {
-            QCOMPARE(seq->step(), step);
-            QTest::mouseClick(seq->applyButton(), Qt::LeftButton);
-            QVERIFY2(seq->state(step) == SetupSequence::StepState::Applied, qPrintable(seq->text()));
-            QTest::mouseClick(seq->nextButton(), Qt::LeftButton);
+            const QString fault = applySetupStep(*seq, step);
+            QVERIFY2(fault.isEmpty(), qPrintable(fault));
         };
         applyStep(SetupSequence::CentreRim);
         // The centre follows the remount, onto the point the field's circles are centred on.
@@ -212,9 +207,7 @@ private slots:
         const QString session = tmp_.filePath("off-axis");
         QVERIFY(writeSession(session.toStdString(), tour, c));
         MainWindow window;
-        QVERIFY(showActive(window));
-        QVERIFY(window.openSource(session));
-        QVERIFY(waitForFrame(window, 0));
+        QVERIFY(openSetupWindow(window, session));
         window.findChild<QAction*>("ballModelPanel")->trigger();
         BallModelPanel* panel = window.ballModel();
         QVERIFY(panel->isVisible());

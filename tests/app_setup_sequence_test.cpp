@@ -53,10 +53,7 @@ private slots:
         const QString session = tmp_.filePath("demo");
         QVERIFY(copyDemo(session));
         MainWindow window;
-        QVERIFY(showActive(window));
-        window.cameraSetup()->frameCount = 8;
-        QVERIFY(window.openSource(session));
-        QVERIFY(waitForFrame(window, 0));
+        QVERIFY(openSetupWindow(window, session));
         ConfigDocument* doc = window.document();
         const Config original = doc->config();
         QUndoStack* undo = doc->undoStack();
@@ -77,13 +74,12 @@ private slots:
         };
         shoot("setup-1-start");
         const auto applyStep = [&](SetupSequence::Step step) {
-            QCOMPARE(seq->step(), step);
             const int before = undo->count();
-            QTest::mouseClick(seq->applyButton(), Qt::LeftButton);
-            QVERIFY2(seq->state(step) == SetupSequence::StepState::Applied, qPrintable(seq->text()));
+            QString text;
+            const QString fault = applySetupStep(*seq, step, &text);
+            QVERIFY2(fault.isEmpty(), qPrintable(fault));
             QCOMPARE(undo->count(), before + 1);
-            QVERIFY2(seq->text().contains("Done:"), qPrintable(seq->text()));
-            QTest::mouseClick(seq->nextButton(), Qt::LeftButton);
+            QVERIFY2(text.contains("Done:"), qPrintable(text));
         };
 
         // Centre and rim: fitted near the demo's own, and the circles are draggable.
@@ -185,9 +181,7 @@ private slots:
             std::ofstream((session + "/truth.csv").toStdString()) << header << "\n" << a << "\n" << b << "\n";
         }
         MainWindow window;
-        QVERIFY(showActive(window));
-        QVERIFY(window.openSource(session));
-        QVERIFY(waitForFrame(window, 0));
+        QVERIFY(openSetupWindow(window, session));
         const Config before = window.document()->config();
         BallModelPanel* panel = window.ballModel();
         QCOMPARE(int(panel->samples().size()), 2);

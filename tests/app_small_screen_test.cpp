@@ -4,6 +4,7 @@
 // beside the panes instead of a window over them, the overlay legend names every field of a
 // candidate's label, and the window carries its icons.
 #include "app/MainWindow.h"
+#include "widgets/ColourEditor.h"
 #include "widgets/ImageView.h"
 #include "widgets/OverlayLegend.h"
 #include "widgets/PipelineView.h"
@@ -14,6 +15,7 @@
 
 #include <QAction>
 #include <QDockWidget>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QScreen>
@@ -219,6 +221,53 @@ private slots:
             if (w->inherits("QTipLabel")) QVERIFY(QTest::qWaitForWindowExposed(w));
         shot(window_.get(), "candidate-tooltip.png", true);
         QToolTip::hideText();
+    }
+
+    // Narrower screens than the laptop's (a 1280x800 projector, a 1400x850 netbook): the window
+    // and its docks stay on the screen, the thresholds' search box clear of its dock's edges and
+    // no wider than the groups under it (it ran under the window's edge), and the Colours tab's
+    // shares lines whole.
+    void narrowerScreensKeepTheDocksWhole_data()
+    {
+        QTest::addColumn<QRect>("screen");
+        QTest::newRow("1280x800") << QRect(0, 0, 1280, 800);
+        QTest::newRow("1400x850") << QRect(0, 0, 1400, 850);
+    }
+
+    void narrowerScreensKeepTheDocksWhole()
+    {
+        QFETCH(QRect, screen);
+        window_->setGeometry(fitWindowGeometry(QSize(1366, 768), frame_, screen));
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        QVERIFY(waitForFrame(*window_, 0));
+        const QString tag = QTest::currentDataTag();
+        shot(window_.get(), "workbench-" + tag + ".png");
+        QVERIFY2(outside(*window_, screen).isEmpty(), qPrintable(outside(*window_, screen)));
+
+        auto* thresholds = window_->findChild<QDockWidget*>("thresholds");
+        QLineEdit* search = window_->thresholdPanel()->searchBox();
+        auto* scroll = window_->thresholdPanel()->findChild<QScrollArea*>();
+        const QRect dock = globalRect(thresholds), box = globalRect(search), content = globalRect(scroll->viewport());
+        // Clear of the dock's edges (the window's on the right) and not over the scroll bar.
+        QVERIFY2(dock.adjusted(2, 0, -2, 0).contains(box) && box.right() <= content.right(),
+                 qPrintable(describe(box) + " in " + describe(dock) + ", groups in " + describe(content)));
+
+        auto* colours = window_->findChild<QDockWidget*>("colours");
+        colours->raise();
+        QLabel* shares = window_->colourEditor()->sharesLabel();
+        QTRY_VERIFY(shares->text().contains("two or more"));
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        auto* colourScroll = window_->colourEditor()->findChild<QScrollArea*>("colourScroll");
+        QVERIFY(colourScroll);
+        const QRect viewport = globalRect(colourScroll->viewport()), label = globalRect(shares);
+        QVERIFY2(shares->width() >= shares->sizeHint().width() && shares->height() >= shares->sizeHint().height(),
+                 qPrintable(QString("%1x%2 for %3x%4").arg(shares->width()).arg(shares->height())
+                                .arg(shares->sizeHint().width()).arg(shares->sizeHint().height())));
+        QVERIFY2(label.left() >= viewport.left() && label.right() <= viewport.right(),
+                 qPrintable(describe(label) + " in " + describe(viewport)));
+        colourScroll->ensureWidgetVisible(shares);
+        shot(window_.get(), "colours-" + tag + ".png");
+        thresholds->raise();
     }
 
     void windowHasItsIcons()

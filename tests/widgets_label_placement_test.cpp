@@ -1,5 +1,5 @@
 // Overlay labels near the robot (widgets/LabelPlacement and the pane that uses it): on a crowded
-// synthetic candidate set no two labels overlap and all stay inside the pane; a lone label sits
+// synthetic candidate set no two labels overlap or touch and all stay inside the pane; a lone label sits
 // right beside its circle; a label moved away gets a leader line; and a real ImageView painting
 // a crowded overlay places its labels the same way and explains a candidate in its tooltip.
 #include "widgets/ImageView.h"
@@ -14,11 +14,13 @@ using namespace omnitune;
 
 namespace {
 
-bool anyOverlap(const std::vector<QRectF>& boxes)
+// Whether two of `boxes` overlap, or (with `gap`) come nearer than `gap` px to each other.
+bool anyOverlap(const std::vector<QRectF>& boxes, double gap = 0.0)
 {
+    const double g = std::max(gap - 0.01, 0.0);  // exactly `gap` apart is apart
     for (std::size_t i = 0; i < boxes.size(); ++i)
         for (std::size_t j = i + 1; j < boxes.size(); ++j)
-            if (boxes[i].intersects(boxes[j])) return true;
+            if (boxes[i].adjusted(-g, -g, g, g).intersects(boxes[j])) return true;
     return false;
 }
 
@@ -71,7 +73,7 @@ private slots:
             QVERIFY(pane.contains(s.box));
             boxes.push_back(s.box);
         }
-        QVERIFY(!anyOverlap(boxes));
+        QVERIFY(!anyOverlap(boxes, kLabelGapPx));  // apart, so that neighbours read as two
         QVERIFY(spots.front().placed);  // the first (the ball's) always gets its place
         QVERIFY2(int(boxes.size()) >= std::min(count, 8), qPrintable(QString::number(boxes.size())));
     }
@@ -128,7 +130,7 @@ private slots:
         std::vector<QRectF> boxes;
         for (const ImageView::PlacedLabel& l : view.placedLabels()) boxes.push_back(l.box);
         QVERIFY(boxes.size() >= 8);
-        QVERIFY(!anyOverlap(boxes));
+        QVERIFY(!anyOverlap(boxes, kLabelGapPx));
 
         // The label explains itself: hovering it names the fields and the thresholds.
         const ImageView::PlacedLabel& first = view.placedLabels().front();

@@ -7,6 +7,7 @@
 #include "core/ColourClasses.h"
 #include "core/Geometry.h"
 #include "widgets/ConfigDocument.h"
+#include "widgets/PaneEditMode.h"
 #include "widgets/PipelineView.h"
 
 #include <QAction>
@@ -90,13 +91,10 @@ void ColourSampler::setBrushRadius(int px)
 
 void ColourSampler::fillMenu(QMenu* menu)
 {
-    samplingAction_ = menu->addAction(tr("&Sample colours on the panes"));
-    samplingAction_->setObjectName("sampleColours");
-    samplingAction_->setCheckable(true);
-    samplingAction_->setShortcut(QKeySequence(Qt::Key_C));
-    samplingAction_->setStatusTip(tr("Left button on any pane adds colours to the selected class; Ctrl removes, "
-                                     "Shift drags a rectangle"));
-    connect(samplingAction_, &QAction::toggled, this, &ColourSampler::setSampling);
+    samplingAction_ = addEditModeAction(menu, this, &ColourSampler::setSampling, tr("&Sample colours on the panes"),
+                                        QStringLiteral("sampleColours"), QKeySequence(Qt::Key_C),
+                                        tr("Left button on any pane adds colours to the selected class; Ctrl removes, "
+                                           "Shift drags a rectangle"));
     wandAction_ = menu->addAction(tr("Magic &wand instead of the brush"));
     wandAction_->setObjectName("magicWand");
     wandAction_->setCheckable(true);

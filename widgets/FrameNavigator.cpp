@@ -95,7 +95,17 @@ void FrameNavigator::setFrameRate(double fps)
     timer_->setInterval(int(1000.0 / (fps_ * speed_->currentData().toDouble())));
 }
 
-bool FrameNavigator::isPlaying() const { return timer_->isActive(); }
+bool FrameNavigator::isTicking() const { return timer_->isActive(); }
+
+void FrameNavigator::setLive(bool on)
+{
+    if (playing_) togglePlay();  // paused first, so playingChanged tells the old mode's owner
+    live_ = on;
+    speed_->setEnabled(!on);
+    speed_->setToolTip(on ? tr("Live frames come at the camera's own frame rate (camera.frame_rate)")
+                          : tr("Playback speed relative to the recording's frame rate"));
+    updatePlayButton();
+}
 
 void FrameNavigator::setMarks(const QVector<FrameMark>& marks, const QVector<FrameMarkKind>& kinds)
 {
@@ -128,14 +138,22 @@ void FrameNavigator::last() { goTo(count_ - 1); }
 
 void FrameNavigator::togglePlay()
 {
-    if (timer_->isActive()) {
-        timer_->stop();
-    } else {
+    playing_ = !playing_;
+    if (playing_ && !live_) {
         setFrameRate(fps_);
         timer_->start();
+    } else {
+        timer_->stop();
     }
-    playButton_->setIcon(style()->standardIcon(timer_->isActive() ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
-    emit playingChanged(timer_->isActive());
+    updatePlayButton();
+    emit playingChanged(playing_);
+}
+
+void FrameNavigator::updatePlayButton()
+{
+    playButton_->setIcon(style()->standardIcon(playing_ ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    playButton_->setToolTip(live_ ? tr("Live / pause (Space); paused, the arrows step through the replay buffer")
+                                  : tr("Play / pause (Space)"));
 }
 
 void FrameNavigator::updateLabels()

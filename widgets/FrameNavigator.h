@@ -2,7 +2,9 @@
 // Frame-by-frame control of a recorded source: first / previous / play / next / last, a slider,
 // a frame number box, loop and playback speed. It asks for frames (frameRequested); the
 // window decides what showing one means. The slider carries marks (FrameMark.h): where a
-// ball was detected, where a config change made one appear or vanish.
+// ball was detected, where a config change made one appear or vanish. In live mode (a camera,
+// LiveController) play / pause means live / paused and the navigator ticks no frames of its
+// own: the camera's grab timer brings them; the speed box, which does not apply, is disabled.
 #include "widgets/FrameMark.h"
 
 #include <QWidget>
@@ -27,7 +29,12 @@ public:
     void setFrameRate(double fps);
     int frameCount() const { return count_; }
     int current() const { return current_; }
-    bool isPlaying() const;
+    bool isPlaying() const { return playing_; }
+    // Live mode on or off; either way it starts paused (the caller plays when it wants).
+    void setLive(bool on);
+    bool isLive() const { return live_; }
+    // Whether the navigator's own play timer runs (playing a recording; never while live).
+    bool isTicking() const;
 
     // Slider marks (MarkedSlider): each owner replaces or sets only its own kinds. A new frame
     // count clears them all: they belonged to the previous source.
@@ -51,10 +58,13 @@ signals:
 
 private:
     void updateLabels();
+    void updatePlayButton();
 
     int count_ = 0;
     int current_ = 0;
     double fps_ = 30.0;
+    bool playing_ = false;
+    bool live_ = false;
     QToolButton* firstButton_;
     QToolButton* previousButton_;
     QToolButton* playButton_;

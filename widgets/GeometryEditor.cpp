@@ -1,6 +1,7 @@
 #include "widgets/GeometryEditor.h"
 
 #include "widgets/ConfigDocument.h"
+#include "widgets/PaneEditMode.h"
 #include "widgets/PipelineView.h"
 
 #include <QAction>
@@ -11,7 +12,7 @@
 namespace omnitune {
 
 GeometryEditor::GeometryEditor(ConfigDocument* doc, PipelineView* view, QObject* parent)
-    : QObject(parent), doc_(doc), view_(view)
+    : QObject(parent), doc_(doc), view_(view), drag_(doc)
 {
     connect(view_, &PipelineView::geometryPressed, this, &GeometryEditor::onPressed);
     connect(view_, &PipelineView::geometryDragged, this, &GeometryEditor::onDragged);
@@ -24,7 +25,7 @@ void GeometryEditor::setEditing(bool on)
     editing_ = on;
     // Switched off mid-drag (another editor took the left button): the drag is cancelled, so the
     // live-applied position must not stay behind without an undo step.
-    if (grabbed_ != Handle::None) doc_->applyConfig(start_);
+    drag_.cancel();
     grabbed_ = Handle::None;
     emit editingChanged(on);  // truth marking gives the left button up first
     view_->setEditingGeometry(on);
@@ -49,11 +50,9 @@ void GeometryEditor::nudge(double dx, double dy)
 
 void GeometryEditor::fillMenu(QMenu* menu)
 {
-    modeAction_ = menu->addAction(tr("&Edit centre and radii on the panes"));
-    modeAction_->setObjectName("editGeometry");
-    modeAction_->setCheckable(true);
-    modeAction_->setShortcut(QKeySequence(Qt::Key_G));
-    connect(modeAction_, &QAction::toggled, this, &GeometryEditor::setEditing);
+    modeAction_ = addEditModeAction(menu, this, &GeometryEditor::setEditing, tr("&Edit centre and radii on the panes"),
+                                    QStringLiteral("editGeometry"), QKeySequence(Qt::Key_G),
+                                    tr("Drag the centre and the radii on the panes; Alt+arrows nudge the centre"));
     const struct {
         QKeySequence key;
         double dx, dy;
@@ -89,13 +88,13 @@ void GeometryEditor::onPressed(QPointF p)
         emit message(tr("Press on the centre cross or on a yellow circle to drag it"));
         return;
     }
-    start_ = doc_->config();
+    drag_.begin();
     grabOffset_ = centre - p;
 }
 
 Config GeometryEditor::dragged(Handle handle, QPointF p) const
 {
-    Config c = start_;
+    Config c = drag_.start();
     GeometryOptions& g = c.geometry;
     const double d = std::hypot(p.x() - g.centerX, p.y() - g.centerY);
     switch (handle) {
@@ -113,8 +112,7 @@ Config GeometryEditor::dragged(Handle handle, QPointF p) const
 void GeometryEditor::onDragged(QPointF p)
 {
     if (grabbed_ == Handle::None) return;
-    const Config next = dragged(grabbed_, p);
-    if (checkConfig(next).empty()) doc_->applyConfig(next);  // live, without an undo step per mouse move
+    drag_.show(dragged(grabbed_, p));
 }
 
 void GeometryEditor::onReleased(QPointF p)
@@ -122,11 +120,11 @@ void GeometryEditor::onReleased(QPointF p)
     if (grabbed_ == Handle::None) return;
     const Handle was = grabbed_;
     grabbed_ = Handle::None;
-    Config next = dragged(was, p);
-    if (!checkConfig(next).empty()) next = doc_->config();  // the last valid position of the drag
-    doc_->applyConfig(start_);  // the undo step goes from where the drag began
+    drag_.show(dragged(was, p));  // an invalid release point keeps the drag's last valid position
     const QString what = was == Handle::Centre ? tr("Move centre") : was == Handle::Outer ? tr("Set outer radius") : tr("Set inner radius");
-    if (const auto why = doc_->replaceConfig(next, what)) emit message(*why);
+    std::optional<QString> refused;
+    drag_.finish(what, &refused);
+    if (refused) emit message(*refused);
     const GeometryOptions& g = doc_->config().geometry;
     emit message(tr("Centre (%1, %2) px, inner radius %3 px, outer radius %4 px")
                      .arg(g.centerX, 0, 'f', 2).arg(g.centerY, 0, 'f', 2).arg(g.innerRadius, 0, 'f', 2)

@@ -5,6 +5,7 @@
 // circle; the panes follow the drag live and the release is one undo step. Alt+arrows move the
 // centre by a quarter pixel, Alt+Shift+arrows by a whole one (plain arrows step frames).
 #include "core/Config.h"
+#include "widgets/ConfigDrag.h"
 
 #include <QObject>
 #include <QPointF>
@@ -43,14 +44,14 @@ private:
     void onPressed(QPointF p);
     void onDragged(QPointF p);
     void onReleased(QPointF p);
-    Config dragged(Handle handle, QPointF p) const;  // the start config with `handle` at `p`
+    Config dragged(Handle handle, QPointF p) const;  // the drag's start config with `handle` at `p`
 
     ConfigDocument* doc_;
     PipelineView* view_;
     QAction* modeAction_ = nullptr;
     bool editing_ = false;
     Handle grabbed_ = Handle::None;
-    Config start_;        // as the drag began: the undo step goes from here
+    ConfigDrag drag_;     // live while it moves, one undo step from where it began
     QPointF grabOffset_;  // centre minus press point, so the centre does not jump to the cursor
 };
 

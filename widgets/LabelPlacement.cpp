@@ -22,9 +22,11 @@ std::vector<QRectF> spotsAround(const LabelRequest& l, double g)
     };
 }
 
+// Whether `box` comes nearer than kLabelGapPx to any of `taken`.
 bool overlapsAny(const QRectF& box, const std::vector<QRectF>& taken)
 {
-    return std::any_of(taken.begin(), taken.end(), [&box](const QRectF& t) { return t.intersects(box); });
+    const QRectF grown = box.adjusted(-kLabelGapPx, -kLabelGapPx, kLabelGapPx, kLabelGapPx);
+    return std::any_of(taken.begin(), taken.end(), [&grown](const QRectF& t) { return t.intersects(grown); });
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 // "A3 98/100/96"): each label takes the first free spot around its circle, nearest first, then
 // farther out with a leader line back to the circle; a label with no free spot left is not
 // drawn (its circle still is, and the pane's tooltip explains it). No two placed labels
-// overlap. Presentation only: widget pixels in, rectangles out.
+// overlap or touch (kLabelGapPx apart at least). Presentation only: widget pixels in, rectangles out.
 #include <QPointF>
 #include <QRectF>
 #include <QSizeF>
@@ -23,6 +23,10 @@ struct LabelSpot {
     QRectF box;           // where the text goes, when placed
     bool leader = false;  // moved away from its circle: draw a line from the circle to the box
 };
+
+// Free space kept between two labels (widget px): two labels that touch read as one line
+// ("A5 98/100/56A5 94/100/43"), and which circle each belongs to is lost.
+constexpr double kLabelGapPx = 3.0;
 
 // Places the labels in the given order (first = most important, placed first). Labels stay
 // inside `bounds` (the pane) and off the `reserved` boxes (labels placed before, a title).

@@ -23,14 +23,6 @@
 
 namespace omnitune {
 
-namespace {
-
-// While live the navigator's play timer is parked at a rate this low (one tick in more than a
-// day, at any playback speed, within QTimer's int range): live frames come from the grab timer.
-constexpr double kParkedNavigatorFps = 2e-6;
-
-}  // namespace
-
 LiveController::LiveController(ConfigDocument* doc, FrameNavigator* nav, PipelineRunner* runner,
                                CameraPanel* cameraPanel, QWidget* window)
     : QObject(window), doc_(doc), nav_(nav), runner_(runner), cameraPanel_(cameraPanel), window_(window),
@@ -133,8 +125,7 @@ std::shared_ptr<FrameSource> LiveController::start(std::unique_ptr<Camera> camer
     offerFittedConfig();
     statusLabel_->show();
     grabTimer_.setInterval(int(1000.0 / std::max(config.camera.frameRate, 1.0)));
-    if (nav_->isPlaying()) nav_->togglePlay();  // a recorded source played: restart as live
-    nav_->setFrameRate(kParkedNavigatorFps);
+    nav_->setLive(true);  // a recorded source played: paused, then live (frames from the grab timer)
     nav_->togglePlay();
     updateActions();
     return std::make_shared<ReplaySource>(replay_, camera_->description(), camera_->frameSize());
@@ -146,18 +137,18 @@ void LiveController::close()
     stopRecording();
     if (cameraPanel_) cameraPanel_->setCamera(nullptr);  // before the camera goes
     Camera& c = camera_->camera();
-    if (nav_->isPlaying()) nav_->togglePlay();  // (onPlayingChanged sees the camera still open)
+    nav_->setLive(false);  // paused first (onPlayingChanged sees the camera still open)
     grabTimer_.stop();
     c.stop();
     c.close();
     camera_.reset();
     liveSource_.reset();
     replay_.reset();  // the runner's ReplaySource keeps its own reference while it reads
-    nav_->setFrameRate(doc_->config().camera.frameRate);  // the navigator plays recordings again
     fitted_.reset();
     statusLabel_->clear();
     statusLabel_->hide();
     updateActions();
+    emit cameraClosed();
 }
 
 Camera* LiveController::camera() const { return camera_ ? &camera_->camera() : nullptr; }
@@ -268,7 +259,7 @@ void LiveController::configChanged(const QString& key)
 bool LiveController::handleNavigation(int position)
 {
     if (!camera_) return false;
-    // The navigator's own timer is parked while live: a position asked for is the user's step
+    // The navigator ticks nothing while live: a position asked for is the user's step
     // (arrow, slider, Home / End), which pauses there, as a DVR does.
     if (nav_->isPlaying()) nav_->togglePlay();
     showPosition(position);

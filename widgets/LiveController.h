@@ -6,7 +6,7 @@
 // the runner a ReplaySource, which reads the buffer by sequence number on the pipeline's thread.
 // While the pipeline is busy a newer frame replaces the one waiting (dropped, never queued); the
 // status label says "live · N fps · M dropped". The navigator's play / pause is live / paused
-// (its own play timer is parked while live); paused, its slider, arrows and keys step through
+// (FrameNavigator::setLive: it ticks no frames of its own); paused, its slider, arrows and keys step through
 // the frozen buffer frame by frame, as SSL-Vision's DVR does; a step asked for while live
 // pauses there. Recording hands every grabbed frame to a CameraRecorder (its own writer thread;
 // RecordBar shows it), also while the view is paused. The camera panel's automatic calibration
@@ -97,6 +97,7 @@ signals:
     void sourceChosen(const QString& source, omnitune::SimulatedStart start);  // Camera > Source
     void frameWanted(int seq);        // show replay frame `seq` (MainWindow::showFrame)
     void cameraOpened();              // the panel has the camera (dock it into view)
+    void cameraClosed();              // the panel has let go of it (nothing to show there)
     // For the notice bar: a fault, settings the camera holds differently, a recording's end.
     // `button` (may be null) goes with it (Reconnect).
     void notice(const QString& title, const QStringList& lines, QAction* button);

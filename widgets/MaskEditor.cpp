@@ -3,6 +3,7 @@
 #include "calib/mask/MaskPaint.h"
 #include "widgets/ConfigDocument.h"
 #include "widgets/ImageView.h"
+#include "widgets/PaneEditMode.h"
 #include "widgets/PaneInput.h"
 #include "widgets/PaneSketch.h"
 #include "widgets/PipelineView.h"
@@ -133,12 +134,9 @@ void MaskEditor::buildToolBar()
 
 void MaskEditor::fillMenu(QMenu* menu)
 {
-    modeAction_ = menu->addAction(tr("Edit &mask on the panes"));
-    modeAction_->setObjectName(QStringLiteral("editMask"));
-    modeAction_->setCheckable(true);
-    modeAction_->setShortcut(QKeySequence(Qt::Key_M));
-    modeAction_->setStatusTip(tr("Paint the robot body, rods and reflections out of what the detector processes"));
-    connect(modeAction_, &QAction::toggled, this, &MaskEditor::setEditing);
+    modeAction_ = addEditModeAction(menu, this, &MaskEditor::setEditing, tr("Edit &mask on the panes"),
+                                    QStringLiteral("editMask"), QKeySequence(Qt::Key_M),
+                                    tr("Paint the robot body, rods and reflections out of what the detector processes"));
     QMenu* toolsMenu = menu->addMenu(tr("Mask &tools"));
     for (QAction* a : tools_->actions()) toolsMenu->addAction(a);
     toolsMenu->addSeparator();

@@ -9,6 +9,7 @@
 #include <QEvent>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
@@ -28,6 +29,9 @@
 namespace omnitune {
 
 namespace {
+
+// Space around the search box (px): it keeps clear of the dock's edges.
+constexpr int kSearchMarginPx = 3;
 
 struct Section {
     const char* key;
@@ -241,7 +245,13 @@ ThresholdPanel::ThresholdPanel(ConfigDocument* doc, QWidget* parent) : QWidget(p
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(search_);
+    // Clear of the dock's edges, which the window's own edge is on the right (it ran under it),
+    // and ending where the groups under it end, not over their scroll bar.
+    auto* searchRow = new QHBoxLayout;
+    searchRow->setContentsMargins(kSearchMarginPx, kSearchMarginPx,
+                                  scroll->verticalScrollBar()->sizeHint().width() + kSearchMarginPx, 0);
+    searchRow->addWidget(search_);
+    layout->addLayout(searchRow);
     layout->addWidget(scroll, 1);
     layout->addWidget(status_);
 

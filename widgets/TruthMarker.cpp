@@ -1,6 +1,7 @@
 #include "widgets/TruthMarker.h"
 
 #include "calib/session/TruthMarkRules.h"
+#include "widgets/PaneEditMode.h"
 #include "widgets/PipelineView.h"
 #include "widgets/TruthDocument.h"
 
@@ -240,12 +241,9 @@ void TruthMarker::refresh()
 
 void TruthMarker::fillMenu(QMenu* menu)
 {
-    markingAction_ = menu->addAction(tr("&Mark ground truth"));
-    markingAction_->setObjectName("markTruth");
-    markingAction_->setCheckable(true);
-    markingAction_->setShortcut(Qt::Key_T);
-    markingAction_->setStatusTip(tr("Click the ball's centre (drag out to set the radius by hand); the middle button pans"));
-    connect(markingAction_, &QAction::toggled, this, &TruthMarker::setMarking);
+    markingAction_ = addEditModeAction(menu, this, &TruthMarker::setMarking, tr("&Mark ground truth"), QStringLiteral("markTruth"),
+                                       QKeySequence(Qt::Key_T),
+                                       tr("Click the ball's centre (drag out to set the radius by hand); the middle button pans"));
     QAction* advance = menu->addAction(tr("Next frame after each mark"));
     advance->setCheckable(true);
     advance->setChecked(advance_);
