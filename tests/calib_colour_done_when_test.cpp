@@ -2,9 +2,9 @@
 // about): starting from the default colours, on a dim tour and on a tour over a cyan-green
 // carpet, the automatic first calibration (AutoColour, from three frames) and then at most three
 // sampling strokes (ClassSampling, on the ball and carpet where the simulator's truth says they
-// are) bring the detector to >= 95 % of the balls within reach that do not touch a line, never
-// below the default colours on all of them, and make the ball's pixels the ball class; the
-// automatic calibration alone does the same on a dim and on a bright tour. Each run prints the
+// are) bring the detector to >= 95 % of the balls within reach, those touching a line included,
+// never below the default colours, and make the ball's pixels the ball class; the automatic
+// calibration alone reaches 95 % on the balls off the lines of a dim and of a bright tour. Each run prints the
 // detection with the default colours, after the automatic calibration and after the strokes
 // (OMNITUNE_DEBUG_MISSES=1 lists every miss with its cause).
 #include "calib/colour/AutoColour.h"
@@ -37,10 +37,10 @@ constexpr double kDoneWhenPct = 95.0;
 constexpr double kReachM = 3.5;
 // A ball touching a line (every third one on these tours) is where colours and the detector
 // meet: the dim tour's lines are not white to the default colours, so its balls merge with them;
-// the automatic calibration fixes that. Some balls on a line stay missed with any colours
-// ("circularity": ball and line are one blob in the green / non-green image, a matter of
-// edges.white_level and the detector). The 95 % is asserted on the balls off the lines; on all
-// balls the calibration must not do worse than the default colours.
+// the automatic calibration fixes that, and the validation leaves the rays into a line out
+// (validation.line_rays_unknown). The automatic calibration alone does not make a dim ball its
+// ball class: where a shadow greys the line, ball and line are both unclassified and one blob
+// ("runs on"), so without the strokes the 95 % is asserted on the balls off the lines.
 
 // The fitted config of the tour; its colours are the defaults.
 Config startConfig(const OpticsCellFrames& rendered) { return rendered.fittedConfig; }
@@ -234,11 +234,9 @@ class ColourDoneWhenTest : public QObject {
         const int strokes = userStrokes(tour, config, 3);
         QVERIFY(checkConfig(config).empty());
         const double afterStrokes = detectionPct(tour, config);
-        const double offLines = detectionPct(tour, config, true);
-        qInfo("%s: default colours %.0f %%, auto %.0f %% (carpet hue %d, V %d), after %d stroke(s) %.0f %%; "
-              "balls off the lines %.0f %%",
-              opticsCellName(tour.cell).c_str(), before, afterAuto, r.carpetHue, r.carpetV, strokes, afterStrokes, offLines);
-        QVERIFY2(offLines >= kDoneWhenPct, qPrintable(QString::number(offLines)));
+        qInfo("%s: default colours %.0f %%, auto %.0f %% (carpet hue %d, V %d), after %d stroke(s) %.0f %%",
+              opticsCellName(tour.cell).c_str(), before, afterAuto, r.carpetHue, r.carpetV, strokes, afterStrokes);
+        QVERIFY2(afterStrokes >= kDoneWhenPct, qPrintable(QString::number(afterStrokes)));
         QVERIFY2(afterStrokes >= before, qPrintable(QString::number(afterStrokes)));
 
         // The ball's pixels are the ball class on the frames of the tour where it is large enough
