@@ -19,6 +19,12 @@ double BallModel::radiusAt(double d, double angleRad) const
     return std::clamp(r, options_.minRadius, options_.maxRadius);
 }
 
+double BallModel::squashAt(double d) const
+{
+    const double k = options_.squashC0 + options_.squashC1 * d + options_.squashC2 * d * d;
+    return k > 0.0 ? k : 1.0;
+}
+
 namespace {
 
 // Odd so that it is centred on the candidate pixel; an even side rounds down, because one

@@ -20,6 +20,13 @@ struct BallModelOptions {
     // ball's offset from the mirror centre (atan2(dy, dx), image x right, y down). 0 and 0: none.
     double directionCos = 0.0;  // ratio
     double directionSin = 0.0;  // ratio
+    // Radial squash of the ball's image: its radial over its tangential semi-axis, k(d) = squashC0
+    // + squashC1*d + squashC2*d^2 (d in px). A mirror that compresses the far field radially (a
+    // spherical one) shows the ball as an ellipse; r(d) is then its area-equivalent radius
+    // sqrt(radial * tangential). 1, 0, 0: a circle (the thesis).
+    double squashC0 = 1.0;  // ratio
+    double squashC1 = 0.0;  // 1/px
+    double squashC2 = 0.0;  // 1/px^2
 };
 
 class BallModel {
@@ -33,6 +40,8 @@ public:
     // Odd side length (px) of the square that holds a ball at this distance (and direction).
     int squareSizeAt(double distancePx) const;
     int squareSizeAt(double distancePx, double angleRad) const;
+    // Radial over tangential semi-axis at this distance; 1 where the model gives no positive ratio.
+    double squashAt(double distancePx) const;
     const BallModelOptions& options() const { return options_; }
 
 private:

@@ -224,6 +224,15 @@ std::vector<ConfigKey> buildSchema()
                           [](auto& c) -> auto& { return c.ball.directionCos; }));
     s.push_back(doubleKey("ball.direction_sin", "ratio", -0.5, 0.5, false, "Sine term of the per-direction correction (see ball.direction_cos)",
                           [](auto& c) -> auto& { return c.ball.directionSin; }));
+    s.push_back(doubleKey("ball.squash_c0", "ratio", -10, 10, false,
+                          "The ball's image is an ellipse whose radial over tangential semi-axis is k(d) = squash_c0 + squash_c1*d + "
+                          "squash_c2*d^2 (a spherical mirror squashes the far field radially; validation.radial_squash uses it); "
+                          "1, 0, 0: a circle. calib/fit/BallSquashFit derives it from the distance map (the optics matrix's calibration does)",
+                          [](auto& c) -> auto& { return c.ball.squashC0; }));
+    s.push_back(doubleKey("ball.squash_c1", "1/px", -1, 1, false, "Linear term of the squash k(d) (see ball.squash_c0)",
+                          [](auto& c) -> auto& { return c.ball.squashC1; }));
+    s.push_back(doubleKey("ball.squash_c2", "1/px^2", -0.1, 0.1, false, "Quadratic term of the squash k(d) (see ball.squash_c0)",
+                          [](auto& c) -> auto& { return c.ball.squashC2; }));
 
     // edges
     s.push_back(intKey("edges.canny_low", "gradient", 0, 1020, true, "Canny low threshold on the L1 gradient |dx|+|dy|: edges grow along pixels above it. On the "
@@ -462,6 +471,14 @@ std::vector<ConfigKey> buildSchema()
                           "refuse_at_rim: how far inside the outer radius a candidate's circle must end; larger refuses more of the "
                           "far ring (balls there too), negative lets circles reach past the outer radius",
                           [](auto& c) -> auto& { return c.validation.rimMarginPx; }));
+    s.push_back(boolKey("validation.radial_squash", false,
+                        "Circularity and run-on look for the ellipse of ball.squash_c0..c2 (radial over tangential semi-axis) around "
+                        "the candidate instead of a circle: a spherical mirror squashes a ball at 1-2 m to ~0.7; off: a circle (thesis)",
+                        [](auto& c) -> auto& { return c.validation.radialSquash; }));
+    s.push_back(doubleKey("validation.squash_min_radius_px", "px", 0, 100, false,
+                          "radial_squash: candidates whose expected radius is below this keep the circle (a small ball's squash lies "
+                          "inside the band anyway, and the ellipse's longer reach meets clutter at the rim)",
+                          [](auto& c) -> auto& { return c.validation.squashMinRadiusPx; }));
 
     // validation of a ball touching a field line (issue 9: ball and line are one blob)
     s.push_back(boolKey("validation.line_rays_unknown", false,

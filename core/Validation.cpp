@@ -31,6 +31,29 @@ struct Circle {
     const ColourRoles& roles;   // "green": a field class, "black": a black class
     ColorClass hint;            // options.ballHint's id, Unknown: no hint
     CarpetColour carpet;        // measured around the circle when carpetByColour
+    // The ball's ellipse (radialSquash): radial over tangential semi-axis, and the unit radial
+    // direction (from the mirror centre through the candidate). 1: a circle.
+    double squash = 1.0;
+    cv::Point2d radial{1.0, 0.0};
+
+    // How far out the ellipse of area-equivalent radius 1 reaches in the direction (ca, sa).
+    double reachAlong(double ca, double sa) const
+    {
+        if (squash == 1.0) return 1.0;
+        const double cr = ca * radial.x + sa * radial.y;  // along the radial axis
+        const double ct = sa * radial.x - ca * radial.y;  // along the tangential one
+        return 1.0 / std::sqrt(cr * cr / squash + squash * ct * ct);
+    }
+    // A border point (relative to the centre) in the circle's space: the ellipse onto the
+    // circle of the same area, so that the circle fit and its allowances apply unchanged.
+    cv::Point2d unsquash(cv::Point2d p) const
+    {
+        if (squash == 1.0) return p;
+        const double s = std::sqrt(squash);
+        const double pr = (p.x * radial.x + p.y * radial.y) / s;
+        const double pt = (p.y * radial.x - p.x * radial.y) * s;
+        return {pr * radial.x - pt * radial.y, pr * radial.y + pt * radial.x};
+    }
 
     bool byColour() const { return colour && options.carpetByColour && carpet.valid(); }
     // A black-class pixel dark against the carpet around the candidate (blackByLocalCarpet).
@@ -268,14 +291,18 @@ void scoreCircularity(const Circle& c, ValidationScores& s)
         const double a = 2.0 * M_PI * i / rays;
         const double ca = std::cos(a);
         const double sa = std::sin(a);
-        const BorderRay ray = traceBorder(c, ca, sa, rMin, rMax);
+        // The band follows the ellipse; hits go back onto the circle of the same area.
+        const double scale = c.reachAlong(ca, sa);
+        const BorderRay ray = traceBorder(c, ca, sa, std::max(0.5, rMin * scale), rMax * scale);
         if (ray.occluded || !ray.judged) continue;
         ++usable;
         if (!ray.hit) continue;
         ++hits;
-        hitSum += ray.hitRadius;
-        hitSq += ray.hitRadius * ray.hitRadius;
-        points.push_back(ray.hitAt);
+        const cv::Point2d at = c.unsquash(ray.hitAt);
+        const double hitRadius = scale == 1.0 ? ray.hitRadius : std::hypot(at.x, at.y);
+        hitSum += hitRadius;
+        hitSq += hitRadius * hitRadius;
+        points.push_back(at);
     }
     if (hits > 0) s.borderSpreadPx = std::sqrt(std::max(0.0, hitSq / hits - (hitSum / hits) * (hitSum / hits)));
     if (usable == 0 || usable < options.minUsableRayShare * rays) return;
@@ -331,7 +358,9 @@ void scoreRunOn(const Circle& c, ValidationScores& s)
     int runOn = 0;
     for (int i = 0; i < rays; ++i) {
         const double a = 2.0 * M_PI * i / rays;
-        const std::optional<bool> runs = runsOnAlong(c, std::cos(a), std::sin(a), reach);
+        const double ca = std::cos(a);
+        const double sa = std::sin(a);
+        const std::optional<bool> runs = runsOnAlong(c, ca, sa, reach * c.reachAlong(ca, sa));
         if (!runs) continue;
         ++judged;
         runOn += *runs;
@@ -362,9 +391,15 @@ RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& op
 
 ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,
                              const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options,
-                             const FrameColour* colour, const ColourRoles& roles)
+                             const FrameColour* colour, const ColourRoles& roles, double squash)
 {
     Circle circle{x, y, radius, classes, edges, geometry, options, colour, roles, roles.idOf(options.ballHint), {}};
+    const cv::Point2d offset(x - geometry.options().centerX, y - geometry.options().centerY);
+    const double offsetLength = std::hypot(offset.x, offset.y);
+    if (options.radialSquash && radius >= options.squashMinRadiusPx && squash > 0.0 && offsetLength > 0.0) {
+        circle.squash = squash;
+        circle.radial = offset / offsetLength;
+    }
     if (colour && (options.carpetByColour || options.blackByLocalCarpet)) {
         CV_Assert(colour->frame().size() == classes.size());
         circle.carpet = CarpetColour::around(*colour, classes, geometry, roles, x, y,
@@ -384,7 +419,8 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
 {
     CV_Assert(classes.type() == CV_8UC1 && edges.type() == CV_8UC1 && classes.size() == edges.size());
     const int square = ball.squareSizeAt(c.distancePx, imageAngleAt(geometry, c.x, c.y));
-    c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, square, classes, edges, geometry, options, colour, roles);
+    c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, square, classes, edges, geometry, options, colour, roles,
+                           ball.squashAt(c.distancePx));
     if (c.rejected != RejectReason::None) return;  // already out (outside the area, too large)
     if (options.refuseAtRim && c.distancePx + c.expectedRadiusPx > geometry.options().outerRadius - options.rimMarginPx) {
         c.rejected = RejectReason::OutsideArea;

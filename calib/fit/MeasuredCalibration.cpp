@@ -1,5 +1,7 @@
 #include "calib/fit/MeasuredCalibration.h"
 
+#include "calib/fit/BallSquashFit.h"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -159,6 +161,12 @@ MeasuredCalibration calibrateFromMeasurements(const Config& base, const CameraMe
     c.ball.minRadius = std::clamp(minR - options.minRadiusMarginPx, 2.0, c.ball.maxRadius - 1);
     c.opencvHough.minRadius = std::max(1, int(std::floor(c.ball.minRadius)));
     c.opencvHough.maxRadius = std::max(c.opencvHough.minRadius + 1, int(std::ceil(c.ball.maxRadius)));
+    // The ball's ellipse from the distance map (the optics that squash the ground squash the ball).
+    if (const auto k = fitBallSquash(c.distanceMap, c.geometry.innerRadius, c.geometry.outerRadius)) {
+        c.ball.squashC0 = (*k)[0];
+        c.ball.squashC1 = (*k)[1];
+        c.ball.squashC2 = (*k)[2];
+    }
 
     // The Hough's radial areas and near-robot radius, from the default ring onto the fitted one.
     const GeometryOptions defaults;

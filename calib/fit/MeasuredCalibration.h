@@ -4,7 +4,7 @@
 // the rim); the robot body the inner radius (BodyFit, else the mask's central blob); the marks
 // the distance map (DistanceMapFit's best monotone polynomial, or the marks' mean radius per
 // distance when that reproduces them better, the viewpoint height as measured); the ball's circles the ball model (BallModelFit, the clamps
-// set to the measured radii plus a margin); the painted mask is the mask. The Hough's radial
+// set to the measured radii plus a margin; its radial squash from the distance map, BallSquashFit); the painted mask is the mask. The Hough's radial
 // areas and near-robot radius, the radial sensors' ring and the OpenCV Hough's radius range are
 // rescaled to the fitted ring and ball. Colours and thresholds stay as in `base`.
 #include "calib/fit/BallModelFit.h"
