@@ -1,6 +1,7 @@
 #include "core/Pipeline.h"
 
 #include "core/BallPosition.h"
+#include "core/CandidatePrefilter.h"
 #include "core/CandidateScore.h"
 #include "core/ConfigSchema.h"
 #include "core/FrameColour.h"
@@ -110,7 +111,7 @@ void paintVotes(const cv::Mat& sums, cv::Mat& out)
 struct Pipeline::Impl {
     explicit Impl(const Config& c)
         : config(c), frontEnd(c), distanceMap(c.distanceMap), ball(c.ball),
-          hough(c.hough, frontEnd.geometry(), ball)
+          hough(c.hough, frontEnd.geometry(), ball, candidatePrefilterFor(c))
     {
     }
 
@@ -136,7 +137,7 @@ struct Pipeline::Impl {
     // Thesis 4.1: candidates from the specific Hough transform, validated.
     void searchSpecific(PipelineResult& r, Stopwatch& clock)
     {
-        hough.process(edges, binary, r.candidates);
+        hough.process(edges, binary, r.candidates, r.classes);
         r.hough = hough.stats();
         r.timings.houghMs += clock.lap();
         validateFrom(0, r);

@@ -20,8 +20,9 @@ constexpr std::size_t kDirectionSectors = 32;
 
 }  // namespace
 
-SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry& geometry, const BallModel& ball)
-    : options_(options), geometry_(&geometry), ball_(&ball)
+SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry& geometry, const BallModel& ball,
+                             const CandidatePrefilter& prefilter)
+    : options_(options), geometry_(&geometry), ball_(&ball), prefilter_(prefilter)
 {
     // User values are checked once, by checkConfig(); this guards the area index image (one
     // byte per pixel, 255 = none) against a caller that skipped it.
@@ -109,8 +110,11 @@ BallCandidate SpecificHough::candidateAt(int x, int y, std::int32_t sum, Candida
     return c;
 }
 
-void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::vector<BallCandidate>& candidates)
+void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::vector<BallCandidate>& candidates,
+                            const cv::Mat& classes)
 {
+    CV_Assert(classes.empty() || (classes.type() == CV_8UC1 && classes.size() == binary.size()));
+    classes_ = classes;
     const cv::Size size = geometry_->imageSize();
     CV_Assert(edges.type() == CV_8UC1 && edges.size() == size);
     CV_Assert(binary.type() == CV_8UC1 && binary.size() == size);
@@ -124,7 +128,7 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
         seeds = &blobs_.find(binary, *geometry_, *ball_, std::max(1, options_.maxCandidates / 4));
         reserved = int(seeds->size());
     }
-    findMaxima(std::max(1, options_.maxCandidates - reserved));
+    findMaxima(binary, std::max(1, options_.maxCandidates - reserved));
     const std::size_t first = candidates.size();
     for (const BallCandidate& b : best_) candidates.push_back(b);
     if (!seeds) return;
@@ -136,7 +140,7 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
         bool covered = false;
         for (std::size_t i = first; i < maxima && !covered; ++i)
             covered = std::hypot(candidates[i].x - seed.x, candidates[i].y - seed.y) < 0.5 * r;
-        if (covered) continue;
+        if (covered || !passesPrefilter(binary, seed.x, seed.y)) continue;
         candidates.push_back(candidateAt(seed.x, seed.y, sums_.ptr<std::int32_t>(seed.y)[seed.x], CandidateSource::BlobSeed));
         ++stats_.blobSeeds;
     }
@@ -239,7 +243,23 @@ void SpecificHough::sum3x3()
     }
 }
 
-void SpecificHough::findMaxima(int cap)
+bool SpecificHough::passesPrefilter(const cv::Mat& binary, int x, int y)
+{
+    if (!prefilter_.active()) return true;
+    const double d = geometry_->distanceAt(x, y);
+    bool pass = d + expectedRadiusAt(*geometry_, *ball_, x, y) <= prefilter_.maxReachPx;
+    if (pass && (prefilter_.minNonGreenPct > 0.0 || prefilter_.minNonBlackPct > 0.0)) {
+        // The square validation's colour tests read (Validation.cpp: validateCandidate).
+        const int side = ball_->squareSizeAt(d, imageAngleAt(*geometry_, x, y));
+        const SquareShares shares =
+            classSquareShares(binary, classes_, geometry_->usedMask(), prefilter_.roles, x, y, side);
+        pass = shares.nonGreenPct >= prefilter_.minNonGreenPct && shares.nonBlackPct >= prefilter_.minNonBlackPct;
+    }
+    stats_.prefiltered += !pass;
+    return pass;
+}
+
+void SpecificHough::findMaxima(const cv::Mat& binary, int cap)
 {
     best_.clear();
     // The scaled sum must reach minAccumulator (and be positive).
@@ -305,16 +325,26 @@ void SpecificHough::findMaxima(int cap)
     };
     std::vector<Peak>& ranked = ranked_;  // at most areas x perArea
     ranked.clear();
+    // With the prefilter, a ball's maximum may rank below dozens of line crossings: the whole
+    // area is sorted (a few hundred maxima) and walked until perArea pass, at most
+    // prefilterChecks of them tested (each test reads one ball square).
+    const bool prefilter = prefilter_.active();
     for (auto& list : peaks_) {
-        const std::size_t considered = std::min<std::size_t>(list.size(), std::size_t(perArea) * 16);
+        const std::size_t considered =
+            prefilter ? list.size() : std::min<std::size_t>(list.size(), std::size_t(perArea) * 16);
         std::partial_sort(list.begin(), list.begin() + std::ptrdiff_t(considered), list.end(), stronger);
         const std::size_t areaStart = ranked.size();
         int rank = 0;
+        int checks = 0;
         for (std::size_t i = 0; i < considered && rank < perArea; ++i) {
             bool suppressed = false;
             for (std::size_t k = areaStart; k < ranked.size() && !suppressed; ++k)
                 suppressed = suppresses(ranked[k], list[i]);
             if (suppressed) continue;
+            if (prefilter) {
+                if (checks++ >= options_.prefilterChecks) break;
+                if (!passesPrefilter(binary, list[i].x, list[i].y)) continue;
+            }
             Peak p = list[i];
             p.rank = rank++;
             ranked.push_back(p);
