@@ -87,6 +87,8 @@ SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry
     rowSums_.assign(std::size_t(size.width) * 3, 0);
     peaks_.resize(options.multipleMaxima ? b.size() : 1);
     best_.reserve(std::size_t(std::max(1, options.maxCandidates)));
+    dropped_.reserve(peaks_.size() * std::size_t(std::max(1, options.maximaPerArea)) +
+                     std::size_t(std::max(1, options.maxCandidates)));
 }
 
 int SpecificHough::areaOf(double distance) const
@@ -119,6 +121,7 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
     CV_Assert(edges.type() == CV_8UC1 && edges.size() == size);
     CV_Assert(binary.type() == CV_8UC1 && binary.size() == size);
     stats_ = HoughStats{};
+    dropped_.clear();
     vote(edges, binary);
     sum3x3();
     // Seeds keep up to a quarter of the candidate budget; the maxima get the rest.
@@ -131,19 +134,23 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
     findMaxima(binary, std::max(1, options_.maxCandidates - reserved));
     const std::size_t first = candidates.size();
     for (const BallCandidate& b : best_) candidates.push_back(b);
-    if (!seeds) return;
-    const std::size_t maxima = candidates.size();
-    for (const BlobSeed& seed : *seeds) {
-        if (int(candidates.size() - first) >= options_.maxCandidates) break;
-        // A maximum on the blob already stands for it.
-        const double r = expectedRadiusAt(*geometry_, *ball_, seed.x, seed.y);
-        bool covered = false;
-        for (std::size_t i = first; i < maxima && !covered; ++i)
-            covered = std::hypot(candidates[i].x - seed.x, candidates[i].y - seed.y) < 0.5 * r;
-        if (covered || !passesPrefilter(binary, seed.x, seed.y)) continue;
-        candidates.push_back(candidateAt(seed.x, seed.y, sums_.ptr<std::int32_t>(seed.y)[seed.x], CandidateSource::BlobSeed));
-        ++stats_.blobSeeds;
+    if (seeds) {
+        const std::size_t maxima = candidates.size();
+        for (const BlobSeed& seed : *seeds) {
+            if (int(candidates.size() - first) >= options_.maxCandidates) break;
+            // A maximum on the blob already stands for it.
+            const double r = expectedRadiusAt(*geometry_, *ball_, seed.x, seed.y);
+            bool covered = false;
+            for (std::size_t i = first; i < maxima && !covered; ++i)
+                covered = std::hypot(candidates[i].x - seed.x, candidates[i].y - seed.y) < 0.5 * r;
+            const std::int32_t sum = sums_.ptr<std::int32_t>(seed.y)[seed.x];
+            if (covered || !passesPrefilter(binary, seed.x, seed.y, sum, CandidateSource::BlobSeed, true)) continue;
+            candidates.push_back(candidateAt(seed.x, seed.y, sum, CandidateSource::BlobSeed));
+            ++stats_.blobSeeds;
+        }
     }
+    for (const BallCandidate& d : dropped_) candidates.push_back(d);
+    stats_.prefilterListed = int(dropped_.size());
 }
 
 void SpecificHough::vote(const cv::Mat& edges, const cv::Mat& binary)
@@ -243,20 +250,34 @@ void SpecificHough::sum3x3()
     }
 }
 
-bool SpecificHough::passesPrefilter(const cv::Mat& binary, int x, int y)
+bool SpecificHough::passesPrefilter(const cv::Mat& binary, int x, int y, std::int32_t sum, CandidateSource source,
+                                    bool list)
 {
     if (!prefilter_.active()) return true;
     const double d = geometry_->distanceAt(x, y);
-    bool pass = d + expectedRadiusAt(*geometry_, *ball_, x, y) <= prefilter_.maxReachPx;
-    if (pass && (prefilter_.minNonGreenPct > 0.0 || prefilter_.minNonBlackPct > 0.0)) {
+    RejectReason why = RejectReason::None;
+    SquareShares shares;
+    if (d + expectedRadiusAt(*geometry_, *ball_, x, y) > prefilter_.maxReachPx) {
+        why = RejectReason::OutsideArea;
+    } else if (prefilter_.minNonGreenPct > 0.0 || prefilter_.minNonBlackPct > 0.0) {
         // The square validation's colour tests read (Validation.cpp: validateCandidate).
         const int side = ball_->squareSizeAt(d, imageAngleAt(*geometry_, x, y));
-        const SquareShares shares =
-            classSquareShares(binary, classes_, geometry_->usedMask(), prefilter_.roles, x, y, side);
-        pass = shares.nonGreenPct >= prefilter_.minNonGreenPct && shares.nonBlackPct >= prefilter_.minNonBlackPct;
+        shares = classSquareShares(binary, classes_, geometry_->usedMask(), prefilter_.roles, x, y, side);
+        if (shares.nonGreenPct < prefilter_.minNonGreenPct)
+            why = RejectReason::NonGreen;
+        else if (shares.nonBlackPct < prefilter_.minNonBlackPct)
+            why = RejectReason::NonBlack;
     }
-    stats_.prefiltered += !pass;
-    return pass;
+    if (why == RejectReason::None) return true;
+    ++stats_.prefiltered;
+    if (list && dropped_.size() < dropped_.capacity()) {
+        BallCandidate c = candidateAt(x, y, sum, source);
+        c.rejected = why;
+        c.scores.nonGreenPct = shares.nonGreenPct;
+        c.scores.nonBlackPct = shares.nonBlackPct;
+        dropped_.push_back(c);
+    }
+    return false;
 }
 
 void SpecificHough::findMaxima(const cv::Mat& binary, int cap)
@@ -336,6 +357,7 @@ void SpecificHough::findMaxima(const cv::Mat& binary, int cap)
         const std::size_t areaStart = ranked.size();
         int rank = 0;
         int checks = 0;
+        int listed = 0;  // refusals of this area listed (the strongest perArea)
         for (std::size_t i = 0; i < considered && rank < perArea; ++i) {
             bool suppressed = false;
             for (std::size_t k = areaStart; k < ranked.size() && !suppressed; ++k)
@@ -343,7 +365,11 @@ void SpecificHough::findMaxima(const cv::Mat& binary, int cap)
             if (suppressed) continue;
             if (prefilter) {
                 if (checks++ >= options_.prefilterChecks) break;
-                if (!passesPrefilter(binary, list[i].x, list[i].y)) continue;
+                if (!passesPrefilter(binary, list[i].x, list[i].y, list[i].sum, CandidateSource::SpecificHough,
+                                     listed < perArea)) {
+                    ++listed;
+                    continue;
+                }
             }
             Peak p = list[i];
             p.rank = rank++;

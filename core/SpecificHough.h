@@ -65,7 +65,11 @@ struct HoughStats {
     int votingPixels = 0; // of them, how many voted (fewer when maxEdgePixels was exceeded)
     int localMaxima = 0;  // local maxima of the sums considered
     int blobSeeds = 0;    // candidates added from blobs
-    int prefiltered = 0;  // maxima and seeds left out by the prefilter
+    int prefiltered = 0;  // maxima and seeds the prefilter refused
+    // Of them, the strongest few (up to maxima_per_area per area, and the seeds) are listed
+    // after the candidates, rejected with the prefilter's reason and not validated: the table
+    // and the miss diagnosis still see what was at the ball.
+    int prefilterListed = 0;
 };
 
 class SpecificHough {
@@ -107,8 +111,9 @@ private:
     void sum3x3();
     // Fills best_ with at most `cap` kept maxima, in the order they become candidates.
     void findMaxima(const cv::Mat& binary, int cap);
-    // Whether a maximum or seed at (x, y) passes the prefilter (counted in stats_ when not).
-    bool passesPrefilter(const cv::Mat& binary, int x, int y);
+    // Whether a maximum or seed at (x, y) passes the prefilter (counted in stats_ when not);
+    // when not and `list`, it joins dropped_ (while there is room) as `source`.
+    bool passesPrefilter(const cv::Mat& binary, int x, int y, std::int32_t sum, CandidateSource source, bool list);
     BallCandidate candidateAt(int x, int y, std::int32_t sum, CandidateSource source) const;
 
     SpecificHoughOptions options_;
@@ -130,6 +135,7 @@ private:
     std::vector<Peak> ranked_;
     std::vector<Peak> kept_;
     std::vector<BallCandidate> best_;
+    std::vector<BallCandidate> dropped_;  // listed prefilter refusals (capacity fixed at construction)
     HoughStats stats_;
     CandidatePrefilter prefilter_;
     cv::Mat classes_;  // header of process()'s classes (no copy), for the prefilter
