@@ -151,6 +151,7 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
     }
     for (const BallCandidate& d : dropped_) candidates.push_back(d);
     stats_.prefilterListed = int(dropped_.size());
+    classes_ = cv::Mat();  // holds no reference to the caller's image between calls
 }
 
 void SpecificHough::vote(const cv::Mat& edges, const cv::Mat& binary)
