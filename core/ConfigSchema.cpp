@@ -316,6 +316,10 @@ std::vector<ConfigKey> buildSchema()
                        "Maxima per radial area the prefilter tests at most (each reads one ball square); bounds its time on a "
                        "cluttered frame",
                        [](auto& c) -> auto& { return c.hough.prefilterChecks; }));
+    s.push_back(boolKey("hough.seeds_without_black", false,
+                        "Blob seeds are flooded with the black classes as background, so a ball beside a robot is a blob of its "
+                        "own (else one region with the robot, too large for a seed); off: every non-green pixel joins a blob",
+                        [](auto& c) -> auto& { return c.hough.seedsWithoutBlack; }));
 
     // OpenCV Hough
     s.push_back(doubleKey("opencv_hough.dp", "ratio", 1, 4, true, "Inverse accumulator resolution of cv::HoughCircles (1: the image's, larger: coarser and faster)",

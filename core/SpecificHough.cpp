@@ -128,7 +128,20 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
     const std::vector<BlobSeed>* seeds = nullptr;
     int reserved = 0;
     if (options_.blobSeeds) {
-        seeds = &blobs_.find(binary, *geometry_, *ball_, std::max(1, options_.maxCandidates / 4));
+        // A ball beside a robot is one non-green region with it, too large for a seed; without
+        // the black classes the ball's own colours are a region of their own.
+        const cv::Mat* seedImage = &binary;
+        if (options_.seedsWithoutBlack && !classes.empty()) {
+            binary.copyTo(seedBinary_);  // allocates only on the first frame
+            for (const RowSpan& s : geometry_->spans()) {
+                const std::uint8_t* c = classes.ptr<std::uint8_t>(s.y);
+                std::uint8_t* b = seedBinary_.ptr<std::uint8_t>(s.y);
+                for (int x = s.x0; x < s.x1; ++x)
+                    if (prefilter_.roles.black(c[x])) b[x] = 255;
+            }
+            seedImage = &seedBinary_;
+        }
+        seeds = &blobs_.find(*seedImage, *geometry_, *ball_, std::max(1, options_.maxCandidates / 4));
         reserved = int(seeds->size());
     }
     findMaxima(binary, std::max(1, options_.maxCandidates - reserved));

@@ -57,6 +57,9 @@ struct SpecificHoughOptions {
     bool prefilterRim = true;
     double prefilterNonBlack = 1.0;  // fraction of validation.min_non_black_pct (0: off)
     int prefilterChecks = 48;  // maxima tested per area at most (bounds the prefilter's time)
+    // Blob seeds are flooded with the black classes counted as background (a ball beside a
+    // robot is then a blob of its own); needs the classes image.
+    bool seedsWithoutBlack = false;  // off: +1 ball at 2 frames per cell, -3 at 1 (rods cells +3)
 };
 
 // What one process() call did with the edge pixels.
@@ -138,6 +141,7 @@ private:
     std::vector<BallCandidate> dropped_;  // listed prefilter refusals (capacity fixed at construction)
     HoughStats stats_;
     CandidatePrefilter prefilter_;
+    cv::Mat seedBinary_;  // binary without the black classes, for the seeds
     cv::Mat classes_;  // header of process()'s classes (no copy), for the prefilter
     double voteScale_ = 1.0;  // edge pixels / voting pixels
     BlobSeeds blobs_;

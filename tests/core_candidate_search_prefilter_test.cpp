@@ -94,6 +94,34 @@ private slots:
         QVERIFY(candidateAt(c, frame, ball));
     }
 
+    // A ball touching a robot's black body is one non-green region with it: too large for a
+    // blob seed unless the black classes are left out of the flood.
+    void aBallBesideARobotStillSeeds()
+    {
+        Config c;
+        c.hough.maximaPerArea = 1;  // no maxima beyond the thesis' one per area: the seed must do it
+        c.hough.minAccumulator = 100000;  // and no maximum at all
+        c.hough.seedsWithoutBlack = true;
+        cv::Mat frame = greenField(c);
+        const cv::Point ball = drawBall(frame, c, 150, 40);
+        const double r = expectedRadius(c, 150);
+        cv::rectangle(frame, cv::Point(ball.x + int(r) - 1, ball.y - 3 * int(r)),
+                      cv::Point(ball.x + 5 * int(r), ball.y + 3 * int(r)), kBlack, cv::FILLED);
+        auto seeded = [&](const Config& k) {
+            const EdgeStages s(k, frame);
+            SpecificHough hough(k.hough, s.geometry, s.ball, candidatePrefilterFor(k));
+            std::vector<BallCandidate> cands;
+            hough.process(s.edges, s.binary, cands, s.classes);
+            for (const auto& q : cands)
+                if (q.source == CandidateSource::BlobSeed && near(q.x, q.y, ball, 2.0)) return true;
+            return false;
+        };
+        Config merged = c;
+        merged.hough.seedsWithoutBlack = false;
+        QVERIFY(!seeded(merged));
+        QVERIFY(seeded(c));
+    }
+
     // A known ball colour skips validation's colour tests, so the prefilter skips them too.
     void aBallHintTurnsTheColourTestsOff()
     {
