@@ -308,6 +308,27 @@ std::vector<ConfigKey> buildSchema()
                         "Choose among valid candidates by one score combining every validation test and the votes; 0: the "
                         "thesis' best circularity, then most votes",
                         [](auto& c) -> auto& { return c.hough.rankByScore; }));
+    s.push_back(doubleKey("hough.prefilter_non_green", "fraction", 0, 1, false,
+                          "Hough maxima and blob seeds whose ball square is less non-green (by colour class) than this fraction "
+                          "of validation.min_non_green_pct take no candidate slot: validation would refuse them, and line "
+                          "crossings otherwise crowd a ball's weaker maximum out of its radial area. 0: off (every maximum is a "
+                          "candidate); 1: as strict as validation without carpet_by_colour",
+                          [](auto& c) -> auto& { return c.hough.prefilterNonGreen; }));
+    s.push_back(boolKey("hough.prefilter_rim", false,
+                        "With validation.refuse_at_rim, maxima and seeds whose circle reaches past the rim take no candidate slot",
+                        [](auto& c) -> auto& { return c.hough.prefilterRim; }));
+    s.push_back(doubleKey("hough.prefilter_non_black", "fraction", 0, 1, false,
+                          "Hough maxima and blob seeds whose ball square is less non-black (by colour class) than this fraction "
+                          "of validation.min_non_black_pct take no candidate slot (a robot beside the ball); 0: off",
+                          [](auto& c) -> auto& { return c.hough.prefilterNonBlack; }));
+    s.push_back(intKey("hough.prefilter_checks", "maxima", 1, 10000, false,
+                       "Maxima per radial area the prefilter tests at most (each reads one ball square); bounds its time on a "
+                       "cluttered frame",
+                       [](auto& c) -> auto& { return c.hough.prefilterChecks; }));
+    s.push_back(boolKey("hough.seeds_without_black", false,
+                        "Blob seeds are flooded with the black classes as background, so a ball beside a robot is a blob of its "
+                        "own (else one region with the robot, too large for a seed); off: every non-green pixel joins a blob",
+                        [](auto& c) -> auto& { return c.hough.seedsWithoutBlack; }));
 
     // OpenCV Hough
     s.push_back(doubleKey("opencv_hough.dp", "ratio", 1, 4, true, "Inverse accumulator resolution of cv::HoughCircles (1: the image's, larger: coarser and faster)",

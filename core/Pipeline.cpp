@@ -1,6 +1,7 @@
 #include "core/Pipeline.h"
 
 #include "core/BallPosition.h"
+#include "core/CandidatePrefilter.h"
 #include "core/CandidateScore.h"
 #include "core/ConfigSchema.h"
 #include "core/FrameColour.h"
@@ -110,7 +111,7 @@ void paintVotes(const cv::Mat& sums, cv::Mat& out)
 struct Pipeline::Impl {
     explicit Impl(const Config& c)
         : config(c), frontEnd(c), distanceMap(c.distanceMap), ball(c.ball),
-          hough(c.hough, frontEnd.geometry(), ball)
+          hough(c.hough, frontEnd.geometry(), ball, candidatePrefilterFor(c))
     {
     }
 
@@ -126,9 +127,11 @@ struct Pipeline::Impl {
 
     const Geometry& geometry() const { return frontEnd.geometry(); }
 
-    void validateFrom(std::size_t first, PipelineResult& r)
+    // Validates candidates [first, end) (end 0: to the last).
+    void validateFrom(std::size_t first, PipelineResult& r, std::size_t end = 0)
     {
-        for (std::size_t i = first; i < r.candidates.size(); ++i)
+        if (end == 0) end = r.candidates.size();
+        for (std::size_t i = first; i < end; ++i)
             validateCandidate(r.candidates[i], r.classes, edges, geometry(), ball, config.validation, colour,
                               frontEnd.roles());
     }
@@ -136,10 +139,12 @@ struct Pipeline::Impl {
     // Thesis 4.1: candidates from the specific Hough transform, validated.
     void searchSpecific(PipelineResult& r, Stopwatch& clock)
     {
-        hough.process(edges, binary, r.candidates);
+        hough.process(edges, binary, r.candidates, r.classes);
         r.hough = hough.stats();
         r.timings.houghMs += clock.lap();
-        validateFrom(0, r);
+        // The prefilter's listed refusals come last and are already judged.
+        const std::size_t judged = r.candidates.size() - std::size_t(r.hough.prefilterListed);
+        if (judged > 0) validateFrom(0, r, judged);
         r.timings.validationMs += clock.lap();
     }
 

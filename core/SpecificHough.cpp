@@ -20,8 +20,9 @@ constexpr std::size_t kDirectionSectors = 32;
 
 }  // namespace
 
-SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry& geometry, const BallModel& ball)
-    : options_(options), geometry_(&geometry), ball_(&ball)
+SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry& geometry, const BallModel& ball,
+                             const CandidatePrefilter& prefilter)
+    : options_(options), geometry_(&geometry), ball_(&ball), prefilter_(prefilter)
 {
     // User values are checked once, by checkConfig(); this guards the area index image (one
     // byte per pixel, 255 = none) against a caller that skipped it.
@@ -86,6 +87,8 @@ SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry
     rowSums_.assign(std::size_t(size.width) * 3, 0);
     peaks_.resize(options.multipleMaxima ? b.size() : 1);
     best_.reserve(std::size_t(std::max(1, options.maxCandidates)));
+    dropped_.reserve(peaks_.size() * std::size_t(std::max(1, options.maximaPerArea)) +
+                     std::size_t(std::max(1, options.maxCandidates)));
 }
 
 int SpecificHough::areaOf(double distance) const
@@ -109,37 +112,59 @@ BallCandidate SpecificHough::candidateAt(int x, int y, std::int32_t sum, Candida
     return c;
 }
 
-void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::vector<BallCandidate>& candidates)
+void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::vector<BallCandidate>& candidates,
+                            const cv::Mat& classes)
 {
+    CV_Assert(classes.empty() || (classes.type() == CV_8UC1 && classes.size() == binary.size()));
+    classes_ = classes;
     const cv::Size size = geometry_->imageSize();
     CV_Assert(edges.type() == CV_8UC1 && edges.size() == size);
     CV_Assert(binary.type() == CV_8UC1 && binary.size() == size);
     stats_ = HoughStats{};
+    dropped_.clear();
     vote(edges, binary);
     sum3x3();
     // Seeds keep up to a quarter of the candidate budget; the maxima get the rest.
     const std::vector<BlobSeed>* seeds = nullptr;
     int reserved = 0;
     if (options_.blobSeeds) {
-        seeds = &blobs_.find(binary, *geometry_, *ball_, std::max(1, options_.maxCandidates / 4));
+        // A ball beside a robot is one non-green region with it, too large for a seed; without
+        // the black classes the ball's own colours are a region of their own.
+        const cv::Mat* seedImage = &binary;
+        if (options_.seedsWithoutBlack && !classes.empty()) {
+            binary.copyTo(seedBinary_);  // allocates only on the first frame
+            for (const RowSpan& s : geometry_->spans()) {
+                const std::uint8_t* c = classes.ptr<std::uint8_t>(s.y);
+                std::uint8_t* b = seedBinary_.ptr<std::uint8_t>(s.y);
+                for (int x = s.x0; x < s.x1; ++x)
+                    if (prefilter_.roles.black(c[x])) b[x] = 255;
+            }
+            seedImage = &seedBinary_;
+        }
+        seeds = &blobs_.find(*seedImage, *geometry_, *ball_, std::max(1, options_.maxCandidates / 4));
         reserved = int(seeds->size());
     }
-    findMaxima(std::max(1, options_.maxCandidates - reserved));
+    findMaxima(binary, std::max(1, options_.maxCandidates - reserved));
     const std::size_t first = candidates.size();
     for (const BallCandidate& b : best_) candidates.push_back(b);
-    if (!seeds) return;
-    const std::size_t maxima = candidates.size();
-    for (const BlobSeed& seed : *seeds) {
-        if (int(candidates.size() - first) >= options_.maxCandidates) break;
-        // A maximum on the blob already stands for it.
-        const double r = expectedRadiusAt(*geometry_, *ball_, seed.x, seed.y);
-        bool covered = false;
-        for (std::size_t i = first; i < maxima && !covered; ++i)
-            covered = std::hypot(candidates[i].x - seed.x, candidates[i].y - seed.y) < 0.5 * r;
-        if (covered) continue;
-        candidates.push_back(candidateAt(seed.x, seed.y, sums_.ptr<std::int32_t>(seed.y)[seed.x], CandidateSource::BlobSeed));
-        ++stats_.blobSeeds;
+    if (seeds) {
+        const std::size_t maxima = candidates.size();
+        for (const BlobSeed& seed : *seeds) {
+            if (int(candidates.size() - first) >= options_.maxCandidates) break;
+            // A maximum on the blob already stands for it.
+            const double r = expectedRadiusAt(*geometry_, *ball_, seed.x, seed.y);
+            bool covered = false;
+            for (std::size_t i = first; i < maxima && !covered; ++i)
+                covered = std::hypot(candidates[i].x - seed.x, candidates[i].y - seed.y) < 0.5 * r;
+            const std::int32_t sum = sums_.ptr<std::int32_t>(seed.y)[seed.x];
+            if (covered || !passesPrefilter(binary, seed.x, seed.y, sum, CandidateSource::BlobSeed, true)) continue;
+            candidates.push_back(candidateAt(seed.x, seed.y, sum, CandidateSource::BlobSeed));
+            ++stats_.blobSeeds;
+        }
     }
+    for (const BallCandidate& d : dropped_) candidates.push_back(d);
+    stats_.prefilterListed = int(dropped_.size());
+    classes_ = cv::Mat();  // holds no reference to the caller's image between calls
 }
 
 void SpecificHough::vote(const cv::Mat& edges, const cv::Mat& binary)
@@ -239,7 +264,37 @@ void SpecificHough::sum3x3()
     }
 }
 
-void SpecificHough::findMaxima(int cap)
+bool SpecificHough::passesPrefilter(const cv::Mat& binary, int x, int y, std::int32_t sum, CandidateSource source,
+                                    bool list)
+{
+    if (!prefilter_.active()) return true;
+    const double d = geometry_->distanceAt(x, y);
+    RejectReason why = RejectReason::None;
+    SquareShares shares;
+    if (d + expectedRadiusAt(*geometry_, *ball_, x, y) > prefilter_.maxReachPx) {
+        why = RejectReason::OutsideArea;
+    } else if (prefilter_.minNonGreenPct > 0.0 || prefilter_.minNonBlackPct > 0.0) {
+        // The square validation's colour tests read (Validation.cpp: validateCandidate).
+        const int side = ball_->squareSizeAt(d, imageAngleAt(*geometry_, x, y));
+        shares = classSquareShares(binary, classes_, geometry_->usedMask(), prefilter_.roles, x, y, side);
+        if (shares.nonGreenPct < prefilter_.minNonGreenPct)
+            why = RejectReason::NonGreen;
+        else if (shares.nonBlackPct < prefilter_.minNonBlackPct)
+            why = RejectReason::NonBlack;
+    }
+    if (why == RejectReason::None) return true;
+    ++stats_.prefiltered;
+    if (list && dropped_.size() < dropped_.capacity()) {
+        BallCandidate c = candidateAt(x, y, sum, source);
+        c.rejected = why;
+        c.scores.nonGreenPct = shares.nonGreenPct;
+        c.scores.nonBlackPct = shares.nonBlackPct;
+        dropped_.push_back(c);
+    }
+    return false;
+}
+
+void SpecificHough::findMaxima(const cv::Mat& binary, int cap)
 {
     best_.clear();
     // The scaled sum must reach minAccumulator (and be positive).
@@ -305,16 +360,31 @@ void SpecificHough::findMaxima(int cap)
     };
     std::vector<Peak>& ranked = ranked_;  // at most areas x perArea
     ranked.clear();
+    // With the prefilter, a ball's maximum may rank below dozens of line crossings: the whole
+    // area is sorted (a few hundred maxima) and walked until perArea pass, at most
+    // prefilterChecks of them tested (each test reads one ball square).
+    const bool prefilter = prefilter_.active();
     for (auto& list : peaks_) {
-        const std::size_t considered = std::min<std::size_t>(list.size(), std::size_t(perArea) * 16);
+        const std::size_t considered =
+            prefilter ? list.size() : std::min<std::size_t>(list.size(), std::size_t(perArea) * 16);
         std::partial_sort(list.begin(), list.begin() + std::ptrdiff_t(considered), list.end(), stronger);
         const std::size_t areaStart = ranked.size();
         int rank = 0;
+        int checks = 0;
+        int listed = 0;  // refusals of this area listed (the strongest perArea)
         for (std::size_t i = 0; i < considered && rank < perArea; ++i) {
             bool suppressed = false;
             for (std::size_t k = areaStart; k < ranked.size() && !suppressed; ++k)
                 suppressed = suppresses(ranked[k], list[i]);
             if (suppressed) continue;
+            if (prefilter) {
+                if (checks++ >= options_.prefilterChecks) break;
+                if (!passesPrefilter(binary, list[i].x, list[i].y, list[i].sum, CandidateSource::SpecificHough,
+                                     listed < perArea)) {
+                    ++listed;
+                    continue;
+                }
+            }
             Peak p = list[i];
             p.rank = rank++;
             ranked.push_back(p);

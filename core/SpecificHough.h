@@ -11,6 +11,7 @@
 // 80 px from the centre with the default model. `radiusAtCentre = false` restores it.
 #include "core/BallCandidate.h"
 #include "core/BlobSeeds.h"
+#include "core/CandidatePrefilter.h"
 #include "core/Geometry.h"
 
 #include <opencv2/core.hpp>
@@ -32,7 +33,7 @@ struct SpecificHoughOptions {
     bool radiusAtCentre = true;     // vote with the radius at the centre's distance (see above)
     // Local maxima kept per radial area, strongest first (thesis: 1). A kept maximum suppresses
     // weaker ones closer than suppressionRadii expected radii, in its own and other areas.
-    int maximaPerArea = 3;
+    int maximaPerArea = 2;
     double suppressionRadii = 1.0;
     // Candidates per frame at most (maxima and seeds): the areas' strongest first, then their
     // second ones, and so on, so each area keeps its best. Bounds the validation time.
@@ -49,6 +50,16 @@ struct SpecificHoughOptions {
     // Choose among valid candidates by the combined score (CandidateScore.h); false: the
     // thesis' best circularity, then most votes.
     bool rankByScore = true;
+    // Maxima that validation would refuse on their square's colour or at the rim take no
+    // candidate slot (CandidatePrefilter.h): the fraction of validation.min_non_green_pct the
+    // class-based non-green share must reach (0: off), and whether the rim test applies.
+    double prefilterNonGreen = 0.85;
+    bool prefilterRim = true;
+    double prefilterNonBlack = 1.0;  // fraction of validation.min_non_black_pct (0: off)
+    int prefilterChecks = 48;  // maxima tested per area at most (bounds the prefilter's time)
+    // Blob seeds are flooded with the black classes counted as background (a ball beside a
+    // robot is then a blob of its own); needs the classes image.
+    bool seedsWithoutBlack = false;  // off: +1 ball at 2 frames per cell, -3 at 1 (rods cells +3)
 };
 
 // What one process() call did with the edge pixels.
@@ -57,6 +68,11 @@ struct HoughStats {
     int votingPixels = 0; // of them, how many voted (fewer when maxEdgePixels was exceeded)
     int localMaxima = 0;  // local maxima of the sums considered
     int blobSeeds = 0;    // candidates added from blobs
+    int prefiltered = 0;  // maxima and seeds the prefilter refused
+    // Of them, the strongest few (up to maxima_per_area per area, and the seeds) are listed
+    // after the candidates, rejected with the prefilter's reason and not validated: the table
+    // and the miss diagnosis still see what was at the ball.
+    int prefilterListed = 0;
 };
 
 class SpecificHough {
@@ -64,12 +80,16 @@ public:
     SpecificHough() = default;
     // Precomputes the circle offsets per radius, the vote weight image and the area index of
     // every pixel. `options` must have passed checkConfig() (the one place user values are checked).
-    SpecificHough(const SpecificHoughOptions& options, const Geometry& geometry, const BallModel& ball);
+    // `prefilter` (candidatePrefilterFor) keeps maxima validation would refuse out of the slots.
+    SpecificHough(const SpecificHoughOptions& options, const Geometry& geometry, const BallModel& ball,
+                  const CandidatePrefilter& prefilter = {});
 
     // `edges`: CV_8UC1 edge image; `binary`: CV_8UC1, 0 = non-green (where a centre may lie).
     // Fills the vote accumulator, its 3x3 sums and appends the candidates (no allocation once
     // `candidates` has capacity).
-    void process(const cv::Mat& edges, const cv::Mat& binary, std::vector<BallCandidate>& candidates);
+    // `classes` (CV_8UC1 class ids, optional) lets the prefilter's non-black test run.
+    void process(const cv::Mat& edges, const cv::Mat& binary, std::vector<BallCandidate>& candidates,
+                 const cv::Mat& classes = cv::Mat());
 
     const HoughStats& stats() const { return stats_; }
 
@@ -93,7 +113,10 @@ private:
     void vote(const cv::Mat& edges, const cv::Mat& binary);
     void sum3x3();
     // Fills best_ with at most `cap` kept maxima, in the order they become candidates.
-    void findMaxima(int cap);
+    void findMaxima(const cv::Mat& binary, int cap);
+    // Whether a maximum or seed at (x, y) passes the prefilter (counted in stats_ when not);
+    // when not and `list`, it joins dropped_ (while there is room) as `source`.
+    bool passesPrefilter(const cv::Mat& binary, int x, int y, std::int32_t sum, CandidateSource source, bool list);
     BallCandidate candidateAt(int x, int y, std::int32_t sum, CandidateSource source) const;
 
     SpecificHoughOptions options_;
@@ -115,7 +138,11 @@ private:
     std::vector<Peak> ranked_;
     std::vector<Peak> kept_;
     std::vector<BallCandidate> best_;
+    std::vector<BallCandidate> dropped_;  // listed prefilter refusals (capacity fixed at construction)
     HoughStats stats_;
+    CandidatePrefilter prefilter_;
+    cv::Mat seedBinary_;  // binary without the black classes, for the seeds
+    cv::Mat classes_;  // header of process()'s classes (no copy), for the prefilter
     double voteScale_ = 1.0;  // edge pixels / voting pixels
     BlobSeeds blobs_;
 };

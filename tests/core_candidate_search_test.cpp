@@ -72,6 +72,7 @@ private slots:
         Config c;
         c.algorithm = Algorithm::Specific;
         c.hough.maximaPerArea = 3;
+        c.hough.prefilterNonBlack = 0;  // the black target must be a candidate (the prefilter drops it)
         cv::Point ball;
         const cv::Mat frame = clutteredArea(c, ball);
         PipelineResult r;
@@ -390,6 +391,7 @@ private slots:
     {
         Config c;
         c.algorithm = Algorithm::Specific;
+        c.hough.prefilterNonBlack = 0;  // the black target must be a candidate (the prefilter drops it)
         cv::Point ball;
         const cv::Mat frame = clutteredArea(c, ball);
         PipelineResult r;

@@ -1,0 +1,158 @@
+// The candidate prefilter (core/CandidatePrefilter.h): maxima that validation would refuse on
+// their square's colour take no candidate slot, so a ball's weaker maximum in the same radial
+// area still becomes a candidate.
+#include "DrawnScene.h"
+#include "core/CandidatePrefilter.h"
+#include "core/Pipeline.h"
+#include "core/SpecificHough.h"
+
+#include <QtTest>
+
+using namespace omnitune;
+using namespace omnitune::test;
+
+namespace {
+
+bool near(double x, double y, cv::Point p, double tol = 2.0) { return std::hypot(x - p.x, y - p.y) <= tol; }
+
+// Two slots per area; the ball at 158 px (area 140..170) and two decoys in the same area at
+// 145 px, inside near_robot_radius so their votes count twice: each out-votes the ball.
+Config twoSlots()
+{
+    Config c;
+    c.algorithm = Algorithm::Specific;
+    c.hough.nearRobotRadius = 150;
+    c.hough.maximaPerArea = 2;
+    c.hough.blobSeeds = false;  // the maxima alone
+    return c;
+}
+
+Config prefilterOff(Config c)
+{
+    c.hough.prefilterNonGreen = 0;
+    c.hough.prefilterNonBlack = 0;
+    c.hough.prefilterRim = false;
+    return c;
+}
+
+// A line crossing's stand-in: a thin white ring of the ball's size around a white dot, so the
+// centre is non-green (it gets votes) but its square is mostly carpet.
+void drawRing(cv::Mat& frame, const Config& c, double distance, double angleDeg)
+{
+    const cv::Point2d p = pointAt(c, distance, angleDeg);
+    const cv::Point centre(int(std::lround(p.x)), int(std::lround(p.y)));
+    cv::circle(frame, centre, int(std::lround(expectedRadius(c, distance))), kWhite, 1, cv::LINE_8);
+    cv::circle(frame, centre, 1, kWhite, cv::FILLED, cv::LINE_8);
+}
+
+bool candidateAt(const Config& c, const cv::Mat& frame, cv::Point ball, int* prefiltered = nullptr)
+{
+    const EdgeStages s(c, frame);
+    SpecificHough hough(c.hough, s.geometry, s.ball, candidatePrefilterFor(c));
+    std::vector<BallCandidate> cands;
+    hough.process(s.edges, s.binary, cands, s.classes);
+    if (prefiltered) *prefiltered = hough.stats().prefiltered;
+    for (const auto& k : cands)
+        if (near(k.x, k.y, ball, 3.0)) return true;
+    return false;
+}
+
+}  // namespace
+
+class CandidatePrefilterTest : public QObject {
+    Q_OBJECT
+private slots:
+    void mostlyGreenMaximaGiveWay()
+    {
+        const Config c = twoSlots();
+        cv::Mat frame = greenField(c);
+        const cv::Point ball = drawBall(frame, c, 158, 30);
+        drawRing(frame, c, 145, 200);
+        drawRing(frame, c, 145, 260);
+        // Without the prefilter the two rings take the area's slots (the scene is the failure).
+        QVERIFY(!candidateAt(prefilterOff(c), frame, ball));
+        int dropped = 0;
+        QVERIFY(candidateAt(c, frame, ball, &dropped));
+        QVERIFY(dropped >= 2);
+        // And the pipeline finds it.
+        PipelineResult r;
+        Pipeline(c).process(frame, PixelFormat::Bgr8, r);
+        QVERIFY(r.detection.found);
+        QVERIFY(near(r.detection.px, r.detection.py, ball));
+    }
+
+    void blackMaximaGiveWay()
+    {
+        Config c = twoSlots();
+        cv::Mat frame = greenField(c);
+        const cv::Point ball = drawBall(frame, c, 158, 30);
+        drawBall(frame, c, 145, 200, kBlack);
+        drawBall(frame, c, 145, 260, kBlack);
+        Config greenOnly = prefilterOff(c);
+        greenOnly.hough.prefilterNonGreen = c.hough.prefilterNonGreen;
+        QVERIFY(!candidateAt(greenOnly, frame, ball));  // black discs are non-green: only non-black tells
+        QVERIFY(candidateAt(c, frame, ball));
+    }
+
+    // A ball touching a robot's black body is one non-green region with it: too large for a
+    // blob seed unless the black classes are left out of the flood.
+    void aBallBesideARobotStillSeeds()
+    {
+        Config c;
+        c.hough.maximaPerArea = 1;  // no maxima beyond the thesis' one per area: the seed must do it
+        c.hough.minAccumulator = 100000;  // and no maximum at all
+        c.hough.seedsWithoutBlack = true;
+        cv::Mat frame = greenField(c);
+        const cv::Point ball = drawBall(frame, c, 150, 40);
+        const double r = expectedRadius(c, 150);
+        cv::rectangle(frame, cv::Point(ball.x + int(r) - 1, ball.y - 3 * int(r)),
+                      cv::Point(ball.x + 5 * int(r), ball.y + 3 * int(r)), kBlack, cv::FILLED);
+        auto seeded = [&](const Config& k) {
+            const EdgeStages s(k, frame);
+            SpecificHough hough(k.hough, s.geometry, s.ball, candidatePrefilterFor(k));
+            std::vector<BallCandidate> cands;
+            hough.process(s.edges, s.binary, cands, s.classes);
+            for (const auto& q : cands)
+                if (q.source == CandidateSource::BlobSeed && near(q.x, q.y, ball, 2.0)) return true;
+            return false;
+        };
+        Config merged = c;
+        merged.hough.seedsWithoutBlack = false;
+        QVERIFY(!seeded(merged));
+        QVERIFY(seeded(c));
+    }
+
+    // A known ball colour skips validation's colour tests, so the prefilter skips them too.
+    void aBallHintTurnsTheColourTestsOff()
+    {
+        Config c;
+        QVERIFY(candidatePrefilterFor(c).minNonGreenPct > 0);
+        QVERIFY(candidatePrefilterFor(c).minNonBlackPct > 0);
+        c.validation.ballHint = "orange";
+        QCOMPARE(candidatePrefilterFor(c).minNonGreenPct, 0.0);
+        QCOMPARE(candidatePrefilterFor(c).minNonBlackPct, 0.0);
+        c.validation.refuseAtRim = false;
+        QVERIFY(!candidatePrefilterFor(c).active());
+    }
+
+    // The shares count processed pixels only, by colour class.
+    void squareSharesCountProcessedPixels()
+    {
+        const Config c;
+        const ColourRoles roles(c.colors.classes);
+        cv::Mat binary(9, 9, CV_8UC1, cv::Scalar(255));  // all green
+        cv::Mat classes(9, 9, CV_8UC1, cv::Scalar(0));
+        cv::Mat used(9, 9, CV_8UC1, cv::Scalar(255));
+        binary(cv::Rect(3, 3, 3, 3)).setTo(0);  // 9 non-green of the 5x5 square's 25
+        used.row(2).setTo(0);                    // one row of 5 not processed: 20 left
+        SquareShares s = classSquareShares(binary, classes, used, roles, 4, 4, 5);
+        QCOMPARE(s.nonGreenPct, 100.0 * 9 / 20);
+        QCOMPARE(s.nonBlackPct, 100.0);  // class 0 is no black class
+        used.setTo(0);
+        s = classSquareShares(binary, classes, used, roles, 4, 4, 5);
+        QCOMPARE(s.nonGreenPct, 0.0);
+    }
+};
+
+QTEST_APPLESS_MAIN(CandidatePrefilterTest)
+#include "core_candidate_search_prefilter_test.moc"
