@@ -125,6 +125,23 @@ struct ValidationOptions {
     // tests still apply. Never required.
     std::string ballHint = "none";
     double ballHintMinPct = 15.0;  // %
+
+    // The non-green test counts a carpet-green pixel of the square as ball when it lies on an
+    // enclosed panel inside the circle the circularity test fitted (core/GreenPanelTest.h): the
+    // green panels of a green-and-white ball have the carpet's hue and saturation, so colour alone
+    // (carpetByColour) calls them carpet. Needs circleFit's fitted circle; without one, or off
+    // (the thesis), every carpet-green pixel is carpet.
+    bool greenPanels = true;
+    // px; the walk out from a green pixel stops this far inside the fitted border: the border's
+    // own pixels blend ball and carpet.
+    double greenPanelMarginPx = 1.5;
+    // Of the 8 compass directions; a green pixel that meets the ball's white before the border in
+    // at least this many also counts as a panel (one at the silhouette: white inwards and on both
+    // sides, 5). 0: only the walk outwards decides.
+    int greenPanelMinDirections = 5;
+    // %; the square's non-green share by colour alone (the white panels) from which its green
+    // panels count: a green-and-white ball shows ~55 %.
+    double greenPanelMinOwnPct = 40.0;
 };
 
 // Scores one candidate and sets its `rejected` field (first failing test: too small, then the
