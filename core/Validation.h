@@ -134,14 +134,14 @@ struct ValidationOptions {
     bool greenPanels = true;
     // px; the walk out from a green pixel stops this far inside the fitted border: the border's
     // own pixels blend ball and carpet.
-    double greenPanelMarginPx = 1.5;
+    double greenPanelMarginPx = 2.0;
     // Of the 8 compass directions; a green pixel that meets the ball's white before the border in
     // at least this many also counts as a panel (one at the silhouette: white inwards and on both
     // sides, 5). 0: only the walk outwards decides.
-    int greenPanelMinDirections = 5;
+    int greenPanelMinDirections = 6;
     // %; the square's non-green share by colour alone (the white panels) from which its green
     // panels count: a green-and-white ball shows ~55 %.
-    double greenPanelMinOwnPct = 40.0;
+    double greenPanelMinOwnPct = 50.0;
 };
 
 // Scores one candidate and sets its `rejected` field (first failing test: too small, then the
