@@ -452,13 +452,13 @@ std::vector<ConfigKey> buildSchema()
                           "ball_hint_class: share of the square's processed pixels of that class that counts as the ball's colour",
                           [](auto& c) -> auto& { return c.validation.ballHintMinPct; }));
     s.push_back(boolKey("validation.green_panels", false,
-                        "Non-green test: a carpet-green pixel inside the circle circle_fit fitted counts as ball when walking out from it "
+                        "Non-green test and borders: a carpet-green pixel inside the expected circle counts as ball when walking out from it "
                         "the ball's white (any non-field class) comes before the border: a green panel enclosed by white ones, which "
                         "colour cannot tell from the carpet; off: every carpet-green pixel is carpet",
                         [](auto& c) -> auto& { return c.validation.greenPanels; }));
-    s.push_back(doubleKey("validation.green_panel_margin_px", "px", 0, 5, false,
-                          "green_panels: the walk out from a green pixel stops this far inside the fitted border (the border's own "
-                          "pixels blend ball and carpet); larger counts fewer panels near the border",
+    s.push_back(doubleKey("validation.green_panel_margin_px", "px", 0, 2, false,
+                          "green_panels: the walks from a green pixel stop this far inside the expected circle (the border's own "
+                          "pixels blend ball and carpet); smaller counts more panels near the border and more carpet beside lines",
                           [](auto& c) -> auto& { return c.validation.greenPanelMarginPx; }));
     s.push_back(intKey("validation.green_panel_min_directions", "directions (of 8)", 0, 8, false,
                        "green_panels: a green pixel that meets the ball's white before the border in at least this many compass "

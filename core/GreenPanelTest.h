@@ -11,7 +11,7 @@
 
 namespace omnitune {
 
-// The ball's disc: its border as the circularity test found it (the fitted circle), in image px.
+// The ball's disc: the candidate's expected circle, in image px.
 struct BallDisc {
     double x = 0;
     double y = 0;

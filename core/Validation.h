@@ -126,22 +126,23 @@ struct ValidationOptions {
     std::string ballHint = "none";
     double ballHintMinPct = 15.0;  // %
 
-    // The non-green test counts a carpet-green pixel of the square as ball when it lies on an
-    // enclosed panel inside the circle the circularity test fitted (core/GreenPanelTest.h): the
-    // green panels of a green-and-white ball have the carpet's hue and saturation, so colour alone
-    // (carpetByColour) calls them carpet. Needs circleFit's fitted circle; without one, or off
-    // (the thesis), every carpet-green pixel is carpet.
+    // A carpet-green pixel inside the candidate's expected circle counts as ball, not carpet (non-
+    // green test, borders into carpet), when it lies on a panel enclosed by the ball's white
+    // (core/GreenPanelTest.h): the green panels of a green-and-white ball have the carpet's hue and
+    // saturation, so colour alone (carpetByColour) calls them carpet. Off (the thesis): every
+    // carpet-green pixel is carpet.
     bool greenPanels = true;
-    // px; the walk out from a green pixel stops this far inside the fitted border: the border's
-    // own pixels blend ball and carpet.
+    // px; the walks from a green pixel stop this far inside the expected circle: the border's own
+    // pixels blend ball and carpet, and a radius model 1-2 px off would reach carpet beyond.
     double greenPanelMarginPx = 2.0;
-    // Of the 8 compass directions; a green pixel that meets the ball's white before the border in
-    // at least this many also counts as a panel (one at the silhouette: white inwards and on both
-    // sides, 5). 0: only the walk outwards decides.
+    // Of the 8 compass directions; a green pixel that meets the ball's white before the circle in
+    // at least this many also counts as a panel. One at the silhouette has white inwards and on
+    // both sides (5 or more); carpet between two crossing lines has it in 5, hence 6. 0: only the
+    // walk outwards decides.
     int greenPanelMinDirections = 6;
     // %; the square's non-green share by colour alone (the white panels) from which its green
-    // panels count: a green-and-white ball shows ~55 %.
-    double greenPanelMinOwnPct = 50.0;
+    // panels count in the non-green test: a green-and-white ball shows ~55 %.
+    double greenPanelMinOwnPct = 45.0;
 };
 
 // Scores one candidate and sets its `rejected` field (first failing test: too small, then the
