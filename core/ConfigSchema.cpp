@@ -481,6 +481,24 @@ std::vector<ConfigKey> buildSchema()
     s.push_back(doubleKey("validation.ball_hint_min_pct", "%", 0, 100, false,
                           "ball_hint_class: share of the square's processed pixels of that class that counts as the ball's colour",
                           [](auto& c) -> auto& { return c.validation.ballHintMinPct; }));
+    s.push_back(boolKey("validation.green_panels", false,
+                        "Non-green test and borders: a carpet-green pixel inside the expected circle counts as ball when walking out from it "
+                        "the ball's white (any non-field class) comes before the border: a green panel enclosed by white ones, which "
+                        "colour cannot tell from the carpet; off: every carpet-green pixel is carpet",
+                        [](auto& c) -> auto& { return c.validation.greenPanels; }));
+    s.push_back(doubleKey("validation.green_panel_margin_px", "px", 0, 2, false,
+                          "green_panels: the walks from a green pixel stop this far inside the expected circle (the border's own "
+                          "pixels blend ball and carpet); smaller counts more panels near the border and more carpet beside lines",
+                          [](auto& c) -> auto& { return c.validation.greenPanelMarginPx; }));
+    s.push_back(intKey("validation.green_panel_min_directions", "directions (of 8)", 0, 8, false,
+                       "green_panels: a green pixel that meets the ball's white before the border in at least this many compass "
+                       "directions is a panel too (one at the ball's silhouette has white inwards and on both sides: 5); lower "
+                       "also takes carpet in line corners, 0: only the walk outwards decides",
+                       [](auto& c) -> auto& { return c.validation.greenPanelMinDirections; }));
+    s.push_back(doubleKey("validation.green_panel_min_own_pct", "%", 0, 100, false,
+                          "green_panels: the panels count in the non-green test only when the square's non-green share by colour "
+                          "alone (the ball's white) reaches this; a green-and-white ball shows ~55 %, carpet beside a line less",
+                          [](auto& c) -> auto& { return c.validation.greenPanelMinOwnPct; }));
 
     // validation at the mirror rim (issue 9: where the optics matrix's false positives sat)
     s.push_back(boolKey("validation.refuse_at_rim", false,

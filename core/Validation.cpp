@@ -4,6 +4,7 @@
 #include "core/ColorClass.h"
 #include "core/ExpectedRadius.h"
 #include "core/Geometry.h"
+#include "core/GreenPanelTest.h"
 #include "core/LineContact.h"
 
 #include <algorithm>
@@ -31,6 +32,7 @@ struct Circle {
     const ColourRoles& roles;   // "green": a field class, "black": a black class
     ColorClass hint;            // options.ballHint's id, Unknown: no hint
     CarpetColour carpet;        // measured around the circle when carpetByColour
+    const EnclosedPanels* panels = nullptr;  // greenPanels: the ball's enclosed green panels
     // The ball's ellipse (radialSquash): radial over tangential semi-axis, and the unit radial
     // direction (from the mirror centre through the candidate). 1: a circle.
     double squash = 1.0;
@@ -70,8 +72,15 @@ struct Circle {
     }
     std::uint8_t classAt(cv::Point p) const { return classes.ptr<std::uint8_t>(p.y)[p.x]; }
     bool edgeAt(cv::Point p) const { return edges.ptr<std::uint8_t>(p.y)[p.x] != 0; }
-    // A known pixel of the carpet: green, and (carpetByColour) of the carpet's own green.
+    // A known pixel of the carpet: green, not an enclosed panel of the ball (greenPanels), and
+    // (carpetByColour) of the carpet's own green.
     bool carpetAt(cv::Point p) const
+    {
+        if (panels && panels->at(p)) return false;  // a green panel enclosed by the ball's white
+        return carpetColourAt(p);
+    }
+    // The same by colour alone (every green panel of the carpet's colour is carpet).
+    bool carpetColourAt(cv::Point p) const
     {
         if (!roles.field(classAt(p))) return false;
         return !byColour() || carpet.matches(colour->hsvAt(p.x, p.y), options.carpetTolerance);
@@ -97,28 +106,35 @@ struct Circle {
 };
 
 // Thesis' first two tests: the non-green and non-black shares of the processed pixels in the
-// candidate's square (and the share of the hinted ball colour).
+// candidate's square (and the share of the hinted ball colour). Green pixels count as green only
+// when they are carpet (carpetAt: of the carpet's colour, not an enclosed green panel); the
+// panels count only when the square's own non-green share (by colour alone) reaches
+// greenPanelMinOwnPct: a ball has its white panels, carpet by a line corner little.
 void scoreSquare(const Circle& c, int squareSide, ValidationScores& s)
 {
     const int half = squareSide / 2;
     int used = 0;
     int green = 0;
+    int colourGreen = 0;  // carpet by colour alone
     int black = 0;
     int hint = 0;
-    const bool byColour = c.byColour();
     for (int yy = std::max(0, c.y - half); yy <= std::min(c.classes.rows - 1, c.y + half); ++yy) {
         const std::uint8_t* cls = c.classes.ptr<std::uint8_t>(yy);
         const std::uint8_t* u = c.geometry.usedMask().ptr<std::uint8_t>(yy);
         for (int xx = std::max(0, c.x - half); xx <= std::min(c.classes.cols - 1, c.x + half); ++xx) {
             if (!u[xx]) continue;
             ++used;
-            if (c.roles.field(cls[xx])) green += !byColour || c.carpetAt({xx, yy});
+            if (c.roles.field(cls[xx])) {
+                green += c.carpetAt({xx, yy});
+                colourGreen += c.carpetColourAt({xx, yy});
+            }
             black += c.blackAt({xx, yy});
             hint += c.hint != ColorClass::Unknown && cls[xx] == std::uint8_t(c.hint);
         }
     }
     if (used > 0) {
-        s.nonGreenPct = 100.0 * (used - green) / used;
+        const double ownPct = 100.0 * (used - colourGreen) / used;
+        s.nonGreenPct = ownPct < c.options.greenPanelMinOwnPct ? ownPct : 100.0 * (used - green) / used;
         s.nonBlackPct = 100.0 * (used - black) / used;
         s.hintPct = 100.0 * hint / used;
     }
@@ -393,7 +409,7 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
                              const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options,
                              const FrameColour* colour, const ColourRoles& roles, double squash)
 {
-    Circle circle{x, y, radius, classes, edges, geometry, options, colour, roles, roles.idOf(options.ballHint), {}};
+    Circle circle{x, y, radius, classes, edges, geometry, options, colour, roles, roles.idOf(options.ballHint), {}, nullptr};
     const cv::Point2d offset(x - geometry.options().centerX, y - geometry.options().centerY);
     const double offsetLength = std::hypot(offset.x, offset.y);
     if (options.radialSquash && radius >= options.squashMinRadiusPx && squash > 0.0 && offsetLength > 0.0) {
@@ -405,6 +421,19 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
         circle.carpet = CarpetColour::around(*colour, classes, geometry, roles, x, y,
                                              options.carpetRingInner * radius + options.carpetRingMarginPx,
                                              options.carpetRingOuter * radius + 2.0 * options.carpetRingMarginPx);
+    }
+    // The walk of the green-panel test reads classes only, never carpetAt (which asks it).
+    struct CirclePanelPixels : PanelPixels {
+        explicit CirclePanelPixels(const Circle& circle) : c(circle) {}
+        bool known(cv::Point p) const override { return c.known(p); }
+        bool field(cv::Point p) const override { return c.roles.field(c.classAt(p)); }
+        const Circle& c;
+    };
+    const CirclePanelPixels pixels(circle);
+    thread_local EnclosedPanels panels;  // its memo is reused between candidates
+    if (options.greenPanels) {
+        panels.reset(BallDisc{double(x), double(y), radius}, options.greenPanelMarginPx, options.greenPanelMinDirections, pixels);
+        circle.panels = &panels;
     }
     ValidationScores s;
     scoreSquare(circle, squareSide, s);

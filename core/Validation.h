@@ -147,6 +147,23 @@ struct ValidationOptions {
     // found, false-positive frames): circle 237 / 240, 7 / 10; ellipse from 0 px 253 / 254, 9 / 10;
     // from 6 px 251 / 252, 9 / 12; from 7.5 px 251 / 252, 7 / 10; from 9 px 249 / 250, 7 / 10.
     double squashMinRadiusPx = 7.5;
+    // A carpet-green pixel inside the candidate's expected circle counts as ball, not carpet (non-
+    // green test, borders into carpet), when it lies on a panel enclosed by the ball's white
+    // (core/GreenPanelTest.h): the green panels of a green-and-white ball have the carpet's hue and
+    // saturation, so colour alone (carpetByColour) calls them carpet. Off (the thesis): every
+    // carpet-green pixel is carpet.
+    bool greenPanels = true;
+    // px; the walks from a green pixel stop this far inside the expected circle: the border's own
+    // pixels blend ball and carpet, and a radius model 1-2 px off would reach carpet beyond.
+    double greenPanelMarginPx = 2.0;
+    // Of the 8 compass directions; a green pixel that meets the ball's white before the circle in
+    // at least this many also counts as a panel. One at the silhouette has white inwards and on
+    // both sides (5 or more); carpet between two crossing lines has it in 5, hence 6. 0: only the
+    // walk outwards decides.
+    int greenPanelMinDirections = 6;
+    // %; the square's non-green share by colour alone (the white panels) from which its green
+    // panels count in the non-green test: a green-and-white ball shows ~55 %.
+    double greenPanelMinOwnPct = 45.0;
 };
 
 // Scores one candidate and sets its `rejected` field (first failing test: too small, then the

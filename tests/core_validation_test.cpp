@@ -577,6 +577,54 @@ private slots:
         validateCandidate(cand, s.classes, s.edges, s.geometry, s.ball, c.validation);
         QCOMPARE(cand.rejected, RejectReason::NonBlack);
     }
+
+    // A white ball with panels of the carpet's own green (the optics renderer's green-and-white
+    // ball): colour cannot tell them from the carpet, their place inside the ball's white can
+    // (validation.green_panels). Off, the ball is "green" and fails the non-green test; with too
+    // little white of its own (green_panel_min_own_pct) the panels do not count either.
+    void carpetGreenPanelsInsideTheWhite()
+    {
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 110, 200, kWhite);
+        const double r = expectedRadius(c, 110);
+        cv::circle(frame, p, int(std::lround(r / 3)), kGreen, cv::FILLED);
+        for (int k = 0; k < 4; ++k) {
+            const double a = (90.0 * k + 45.0) * M_PI / 180.0;
+            const cv::Point q(int(std::lround(p.x + 0.55 * r * std::cos(a))), int(std::lround(p.y + 0.55 * r * std::sin(a))));
+            cv::circle(frame, q, int(std::lround(r / 5)), kGreen, cv::FILLED);
+        }
+        const BallCandidate on = validateFrame(c, frame, p);
+        QVERIFY2(on.rejected == RejectReason::None, qPrintable(verdict(on)));
+        QVERIFY2(on.scores.nonGreenPct > 95, qPrintable(verdict(on)));
+        Config off = c;
+        off.validation.greenPanels = false;
+        const BallCandidate thesis = validateFrame(off, frame, p);
+        QVERIFY2(thesis.rejected == RejectReason::NonGreen, qPrintable(verdict(thesis)));
+        Config guarded = c;
+        guarded.validation.greenPanelMinOwnPct = 99;
+        QCOMPARE(validateFrame(guarded, frame, p).rejected, RejectReason::NonGreen);
+    }
+
+    // Carpet between two white lines crossing is bounded by white on five of eight sides, like a
+    // green panel at a ball's silhouette: it stays carpet at the default green_panel_min_directions
+    // (6) and counts as a panel at 5, which is why the default is 6.
+    void lineCrossingCarpetIsNoPanel()
+    {
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point2d pd = pointAt(c, 150, 120);
+        const cv::Point p(int(std::lround(pd.x)), int(std::lround(pd.y)));
+        cv::line(frame, p - cv::Point(40, 0), p + cv::Point(40, 0), kWhite, 3);
+        cv::line(frame, p - cv::Point(0, 40), p + cv::Point(0, 40), kWhite, 3);
+        const BallCandidate dflt = validateFrame(c, frame, p);
+        QVERIFY2(dflt.scores.nonGreenPct < c.validation.minNonGreenPct, qPrintable(verdict(dflt)));
+        QCOMPARE(dflt.rejected, RejectReason::NonGreen);
+        Config five = c;
+        five.validation.greenPanelMinDirections = 5;
+        const BallCandidate loose = validateFrame(five, frame, p);
+        QVERIFY2(loose.scores.nonGreenPct > dflt.scores.nonGreenPct, qPrintable(verdict(loose)));
+    }
 };
 
 QTEST_GUILESS_MAIN(ValidationTest)
