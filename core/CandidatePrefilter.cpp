@@ -17,6 +17,7 @@ CandidatePrefilter candidatePrefilterFor(const Config& config)
         p.minNonBlackPct = config.hough.prefilterNonBlack * v.minNonBlackPct;
     }
     p.roles = ColourRoles(config.colors.classes);
+    p.tooSmallBelowPx = v.minRadiusPx;
     if (config.hough.prefilterRim && v.refuseAtRim) p.maxReachPx = config.geometry.outerRadius - v.rimMarginPx;
     return p;
 }

@@ -286,7 +286,7 @@ bool SpecificHough::passesPrefilter(const cv::Mat& binary, int x, int y, std::in
     ++stats_.prefiltered;
     if (list && dropped_.size() < dropped_.capacity()) {
         BallCandidate c = candidateAt(x, y, sum, source);
-        c.rejected = why;
+        c.rejected = c.expectedRadiusPx < prefilter_.tooSmallBelowPx ? RejectReason::TooSmall : why;
         c.scores.nonGreenPct = shares.nonGreenPct;
         c.scores.nonBlackPct = shares.nonBlackPct;
         dropped_.push_back(c);
