@@ -103,6 +103,26 @@ private slots:
         QCOMPARE(share(classes, ballCore, ColorClass::Black), 0.0);
     }
 
+    // In a dim hall the ball is darker than the defaults' V floor (80): the calibration lowers
+    // the ball class's floor to just above its black, so the ball is orange, not in no class
+    // (where it merges with a shadowed line); in bright light the floor stays as it was.
+    void dimBallKeepsItsClass()
+    {
+        const Scene dim = drawScene(cv::Scalar(40, 140, 40), 0.3, 6);
+        const Geometry geometry = ring();
+        const cv::Rect ballCore(dim.ball.x - 5, dim.ball.y - 5, 10, 10);
+        QCOMPARE(share(segment(ColorLutOptions{}, dim.frame, geometry), ballCore, ColorClass::Orange), 0.0);
+        const AutoColourResult res = autoColour({dim.frame}, geometry, ColorLutOptions{});
+        QVERIFY(res.ok());
+        QVERIFY(share(segment(res.colors, dim.frame, geometry), ballCore, ColorClass::Orange) > 0.95);
+
+        const Scene bright = drawScene(cv::Scalar(40, 140, 40), 1.5, 7);
+        const AutoColourResult lit = autoColour({bright.frame}, geometry, ColorLutOptions{});
+        QVERIFY(lit.ok());
+        const std::size_t orange = std::size_t(ColorClass::Orange) - 1;
+        QCOMPARE(lit.colors.classes[orange].boxes.front().vMin, ColorLutOptions{}.classes[orange].boxes.front().vMin);
+    }
+
     // The default colours fail on the cyan-green carpet (it is "cyan"); the calibration trims
     // the cyan class off the carpet's hues and says so.
     void cyanGreenCarpetNeedsIt()

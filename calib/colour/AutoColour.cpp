@@ -182,6 +182,15 @@ AutoColourResult autoColour(const std::vector<cv::Mat>& frames, const Geometry& 
         res.notes.push_back("no class has role line: lines stay unclassified");
     }
 
+    // The ball's and the markers' colours are seen in the same light as the carpet: a saturated
+    // hue brighter than black is theirs however dim the hall (the defaults' V floor of 80 left a
+    // dim tour's orange ball, V ~55, in no class, merging it with a shadowed line).
+    for (ColourClassDef& c : res.colors.classes) {
+        if (!c.enabled || c.role == ColourRole::Field || c.role == ColourRole::Black || c.role == ColourRole::Line) continue;
+        for (HsvRange& box : c.boxes)
+            if (box.enabled && box.vMin > blackV + 1 && box.vMin <= box.vMax) box.vMin = std::min(box.vMax, blackV + 1);
+    }
+
     // Colour classes after the carpet in priority order never see the carpet's hues anyway; trim
     // them so that their boxes say what they do (a cyan-green carpet overlaps the cyan marker class).
     if (green.hMin <= green.hMax) {

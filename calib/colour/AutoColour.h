@@ -2,7 +2,9 @@
 // Automatic first colour calibration (issue 10): from one or a few frames, the dominant hue
 // inside the used area is the carpet; the first field class gets one H/S box from the carpet's
 // spread (percentiles), the first black and line classes black and white relative to the
-// carpet's brightness. A first guess the user refines, not a replacement for looking at the
+// carpet's brightness, and the V floor of the ball and marker classes lowered to just above that
+// black (in a dim hall a ball is darker than the defaults' floor). A first guess the user
+// refines, not a replacement for looking at the
 // segmented pane. Only the first field class: one dominant hue says nothing about a second
 // carpet region (a dark-green patch, a cyan-green half), so any other enabled field class keeps
 // the boxes the user sampled into it, and a note names it.
