@@ -187,6 +187,12 @@ private:
         QVERIFY(openWindow(window_, session, Shown::Active));
         raiseColours();
         QCOMPARE(config().colors.classes, defaultColourClasses());  // the start: the default colours
+        // The class list's shares are those of the segmented pane (relative black included).
+        const ClassShares& listed = editor()->shares();
+        const cv::Mat& shown = window_->lastRun()->result.classes;
+        const cv::Mat used = Geometry(config().geometry, config().mask).usedMask();
+        QVERIFY(listed.processed > 0 && !listed.counts.empty());
+        QCOMPARE(listed.counts[0], cv::countNonZero((shown == int(colourClassId(0))) & used));
         shoot(name + "-1-default");
         SweepFigures before;
         QVERIFY(sweep(before));

@@ -283,6 +283,17 @@ private slots:
         // A class of two boxes claims both.
         const ClassShares two = classShares(hsv, used, {{box(55, 65), box(0, 5, 0, 10)}});
         QCOMPARE(two.counts[0], 2);
+        // The shares as the pipeline segmented the frame (relative black, LUT bits): the
+        // processed pixels' ids count, the overlap stays the boxes'.
+        ClassShares seen = s;
+        cv::Mat ids(1, 5, CV_8UC1, cv::Scalar(2));
+        ids.at<std::uint8_t>(0, 0) = 0;
+        countSegmented(seen, ids, used);
+        QCOMPARE(seen.processed, 4);
+        QCOMPARE(seen.counts[0], 0);
+        QCOMPARE(seen.counts[1], 3);
+        QCOMPARE(seen.unclassified, 1);
+        QCOMPARE(seen.overlapCount, 1);
     }
 
     void classViewDimsAndFlags()

@@ -298,6 +298,7 @@ void ColourEditor::analyse()
         runHsv_ = hsvImage(run_->frame, run_->format);
         runUsed_ = Geometry(run_->config.geometry, run_->config.mask).usedMask();
         shares_ = classShares(runHsv_, runUsed_, boxesOf(run_->config.colors.classes));
+        if (run_->result.classes.size() == run_->frame.size()) countSegmented(shares_, run_->result.classes, runUsed_);
         const HsvHistogram h = hsvHistogram(runHsv_, runUsed_);
         plane_->setHistogram(toQImage(hsPlaneImage(h)), h.v);
     } else {

@@ -1,5 +1,7 @@
 #include "calib/colour/ClassShares.h"
 
+#include <algorithm>
+
 namespace omnitune {
 
 bool boxesContain(const std::vector<HsvRange>& boxes, int h, int s, int v)
@@ -38,6 +40,25 @@ ClassShares classShares(const cv::Mat& hsv, const cv::Mat& used, const ClassBoxe
         }
     }
     return res;
+}
+
+void countSegmented(ClassShares& shares, const cv::Mat& classes, const cv::Mat& used)
+{
+    CV_Assert(classes.type() == CV_8UC1 && (used.empty() || (used.type() == CV_8UC1 && used.size() == classes.size())));
+    shares.processed = 0;
+    shares.unclassified = 0;
+    std::fill(shares.counts.begin(), shares.counts.end(), 0);
+    for (int y = 0; y < classes.rows; ++y) {
+        const std::uint8_t* id = classes.ptr<std::uint8_t>(y);
+        const std::uint8_t* use = used.empty() ? nullptr : used.ptr<std::uint8_t>(y);
+        for (int x = 0; x < classes.cols; ++x) {
+            if (use && !use[x]) continue;
+            ++shares.processed;
+            const std::size_t index = std::size_t(id[x]) - 1;
+            if (id[x] == 0 || index >= shares.counts.size()) ++shares.unclassified;
+            else ++shares.counts[index];
+        }
+    }
 }
 
 }  // namespace omnitune

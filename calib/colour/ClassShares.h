@@ -4,9 +4,10 @@
 // the share in no class, and the pixels two or more classes claim (where the priority order
 // decides, and where the user may want to tighten a box).
 //
-// Exact HSV boxes per pixel, not the LUT: shares differ from the segmented pane only by the
-// LUT's quantisation (colors.lut_bits) and relative black (black decided per frame from the
-// carpet's brightness).
+// Exact HSV boxes per pixel, not the LUT, for the overlaps (which boxes claim a pixel);
+// countSegmented() then takes the shares from the segmented image itself, so that they say
+// what the pane shows (the LUT's quantisation, and relative black decided per frame from the
+// carpet's brightness: a dim carpet inside the fixed black box is not "95 % black").
 #include "core/HsvRange.h"
 
 #include <opencv2/core.hpp>
@@ -31,6 +32,10 @@ struct ClassShares {
 
 // `hsv`: the frame in OpenCV HSV; `used`: CV_8UC1, non-zero = processed (empty: every pixel).
 ClassShares classShares(const cv::Mat& hsv, const cv::Mat& used, const ClassBoxes& classes);
+
+// Replaces `shares`' processed, counts and unclassified with those of `classes` (CV_8UC1 class
+// ids as the pipeline segmented them: 0 none, index + 1 a class) over `used`; keeps the overlap.
+void countSegmented(ClassShares& shares, const cv::Mat& classes, const cv::Mat& used);
 
 // Whether any of the boxes contains the colour.
 bool boxesContain(const std::vector<HsvRange>& boxes, int h, int s, int v);
