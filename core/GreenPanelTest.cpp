@@ -45,15 +45,7 @@ bool onEnclosedPanel(cv::Point p, const BallDisc& disc, double marginPx, const P
     // The disc's centre has no outward direction: any will do, the whole panel is judged.
     if (d < 0.5) dx = 1.0, dy = 0.0;
     else dx /= d, dy /= d;
-    cv::Point last = p;
-    for (double r = d + 0.5; r <= end + 1e-9; r += 0.5) {
-        const cv::Point q(int(std::lround(disc.x + r * dx)), int(std::lround(disc.y + r * dy)));
-        if (q == last) continue;
-        last = q;
-        if (!pixels.known(q)) return false;
-        if (!pixels.field(q)) return true;
-    }
-    return false;
+    return wallAlong(p, dx, dy, disc, marginPx, pixels);  // the walk outwards
 }
 
 void EnclosedPanels::reset(const BallDisc& disc, double marginPx, int minDirections, const PanelPixels& pixels)
