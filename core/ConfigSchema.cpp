@@ -535,6 +535,12 @@ std::vector<ConfigKey> buildSchema()
                           "line_rays_unknown: how far out (expected radii from the centre) the line class must go on for a ray to "
                           "have met a line; shorter: a white panel ending at the ball's blurred border counts as a line too",
                           [](auto& c) -> auto& { return c.validation.lineContactReach; }));
+    s.push_back(boolKey("validation.foreign_rays_unknown", false,
+                        "When the candidate's centre has a ball class (the team's ball colour), circularity rays that leave that "
+                        "class (crossing only it, or black, out to line_contact_min_entry) into an object that is neither carpet "
+                        "nor line, going on past line_contact_reach, are left out like rays into a robot: a ball at a person's "
+                        "feet or a robot's grey side; off: such a ray finds no border and is a miss",
+                        [](auto& c) -> auto& { return c.validation.foreignRaysUnknown; }));
 
     // algorithm
     ConfigKey alg{"algorithm.method", ValueType::Choice, "", 0, 0,

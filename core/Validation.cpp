@@ -5,6 +5,7 @@
 #include "core/ExpectedRadius.h"
 #include "core/Geometry.h"
 #include "core/GreenPanelTest.h"
+#include "core/ForeignContact.h"
 #include "core/LineContact.h"
 
 #include <algorithm>
@@ -37,6 +38,7 @@ struct Circle {
     // direction (from the mirror centre through the candidate). 1: a circle.
     double squash = 1.0;
     cv::Point2d radial{1.0, 0.0};
+    ColorClass ballClass = ColorClass::Unknown;  // foreignRaysUnknown: the centre's ball class
 
     // How far out the ellipse of area-equivalent radius 1 reaches in the direction (ca, sa).
     double reachAlong(double ca, double sa) const
@@ -166,6 +168,8 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
     bool blocked = false;  // an edge inside the band came first
     LineContactRay line(c.classes, c.geometry, c.roles, c.x, c.y, ca, sa, options.lineContactMinEntry * c.radius,
                         options.lineContactReach * c.radius);
+    ForeignContactRay object(c.classes, c.geometry, c.roles, c.ballClass, c.x, c.y, ca, sa,
+                             options.lineContactMinEntry * c.radius, options.lineContactReach * c.radius);
     for (double r = rStart; r <= rMax + 1e-9 && !ray.hit && !blocked; r += 0.5) {
         const cv::Point p = c.along(r, ca, sa);
         if (p == last) continue;
@@ -188,6 +192,10 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
             anyUsed = true;
             if (options.lineRaysUnknown && line.entersLine(p, r)) {
                 ray.occluded = true;  // left out, like a ray into a robot
+                return ray;
+            }
+            if (object.entersObject(p, r)) {
+                ray.occluded = true;  // into feet or a robot's grey parts: as a line
                 return ray;
             }
             if (c.edgeAt(p)) edge = true, edgePixel = p;
@@ -416,6 +424,7 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
         circle.squash = squash;
         circle.radial = offset / offsetLength;
     }
+    if (options.foreignRaysUnknown) circle.ballClass = ballClassAt(classes, roles, x, y);
     if (colour && (options.carpetByColour || options.blackByLocalCarpet)) {
         CV_Assert(colour->frame().size() == classes.size());
         circle.carpet = CarpetColour::around(*colour, classes, geometry, roles, x, y,

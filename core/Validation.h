@@ -135,6 +135,12 @@ struct ValidationOptions {
     bool lineRaysUnknown = true;
     double lineContactMinEntry = 0.5;  // expected radii
     double lineContactReach = 1.5;     // expected radii
+    // When the candidate's centre has a ball class (the team's ball colour), a ray that crosses
+    // that class alone (or black, its shaded side) out to lineContactMinEntry and then runs into
+    // an object that is neither carpet nor line, going on to lineContactReach, is left out of the
+    // circularity too (core/ForeignContact.h): a ball at a person's feet or a robot's grey side.
+    // Off (the thesis): such a ray finds no border and counts as a miss.
+    bool foreignRaysUnknown = true;
     // The circularity and run-on tests look for the ellipse the ball model's squash gives
     // (ball.squash_c0..c2: radial over tangential semi-axis, the radial axis towards the mirror
     // centre) instead of a circle: a spherical mirror shows a ball at 1-2 m with a ratio of
