@@ -42,7 +42,7 @@ const std::vector<OptionSpec> kOptions = {
     {"optics", false, false, "      ray cast through a catadioptric camera instead of the tour (docs/simulator.md);\n"
                              "                          config.yml is fitted from measurements/, never the truth"},
     {"distractors", true, false, "D     --optics: none | robots | noise | rods (default none)"},
-    {"carpet", true, false, "C     --optics: green | cyan-green | dark-green (default green)"},
+    {"carpet", true, false, "C     --optics: green | cyan-green | dark-green | teal (default green)"},
     {"mirror", true, false, "M     --optics: hyperbolic | spherical (default hyperbolic)"},
     {"size", true, false, "WxH   --optics: 640x480 | 480x480 (default 640x480)"},
     {"help", false, false, "      this text"},
@@ -91,7 +91,7 @@ int runOptics(const CommandLine& cl)
     }
     if (!pickName(cl, "light", {"dim", "normal", "bright", "uneven"}, cell.light, error) ||
         !pickName(cl, "distractors", {"none", "robots", "noise", "rods"}, cell.distractors, error) ||
-        !pickName(cl, "carpet", {"green", "cyan-green", "dark-green"}, cell.carpet, error) ||
+        !pickName(cl, "carpet", {"green", "cyan-green", "dark-green", "teal"}, cell.carpet, error) ||
         !pickName(cl, "mirror", {"hyperbolic", "spherical"}, cell.mirror, error))
         return fail(error);
     if (auto v = cl.value("size")) {

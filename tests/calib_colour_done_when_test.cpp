@@ -1,12 +1,13 @@
 // Issue 10's "done when", on the optics simulator (calib/sim/optics; robots, feet and shadows
 // about): starting from the default colours, on a dim tour and on a tour over a cyan-green
-// carpet, the automatic first calibration (AutoColour, from three frames) and then at most three
-// sampling strokes (ClassSampling, on the ball and carpet where the simulator's truth says they
-// are) bring the detector to >= 95 % of the balls within reach, those touching a line included,
-// never below the default colours, and make the ball's pixels the ball class; the automatic
-// calibration alone reaches 95 % on the balls off the lines of a dim and of a bright tour. Each run prints the
-// detection with the default colours, after the automatic calibration and after the strokes
-// (OMNITUNE_DEBUG_MISSES=1 lists every miss with its cause).
+// carpet past the default green box (OpticsCarpet::Teal), the automatic first calibration
+// (AutoColour, from three frames) and then at most three sampling strokes (ClassSampling, on the
+// ball and carpet where the simulator's truth says they are) bring the detector to >= 95 % of the
+// balls within reach, those touching a line included, never below the default colours, and make
+// the ball's pixels the ball class; the automatic calibration alone reaches 95 % of the balls
+// within reach of a dim and of a bright tour, those touching a line or feet included. Each run
+// prints the detection with the default colours, after the automatic calibration and after the
+// strokes (OMNITUNE_DEBUG_MISSES=1 lists every miss with its cause).
 #include "calib/colour/AutoColour.h"
 #include "calib/colour/ClassSampling.h"
 #include "calib/colour/ColourSamples.h"
@@ -37,10 +38,9 @@ constexpr double kDoneWhenPct = 95.0;
 constexpr double kReachM = 3.5;
 // A ball touching a line (every third one on these tours) is where colours and the detector
 // meet: the dim tour's lines are not white to the default colours, so its balls merge with them;
-// the automatic calibration fixes that, and the validation leaves the rays into a line out
-// (validation.line_rays_unknown). The automatic calibration alone does not make a dim ball its
-// ball class: where a shadow greys the line, ball and line are both unclassified and one blob
-// ("runs on"), so without the strokes the 95 % is asserted on the balls off the lines.
+// the automatic calibration fixes that, and the validation leaves the rays into a line, or into
+// the feet of a person standing at the ball, out (validation.line_rays_unknown,
+// validation.foreign_rays_unknown).
 
 // The fitted config of the tour; its colours are the defaults.
 Config startConfig(const OpticsCellFrames& rendered) { return rendered.fittedConfig; }
@@ -51,7 +51,8 @@ struct Tour {
     Geometry geometry;
 };
 
-// Whether the ball of frame f touches a field line (the simulator's field model).
+// Whether the ball of frame f touches a field line (the simulator's field model), for the
+// miss listing.
 bool touchesLine(const OpticsCell& cell, int f)
 {
     const OpticsCamera camera = opticsCellCamera(cell);
@@ -66,7 +67,6 @@ bool judged(const Tour& tour, int f)
     const auto t = tour.rendered.truth.find(f);
     return t != tour.rendered.truth.end() && t->second.ballVisible && std::hypot(t->second.xM, t->second.yM) <= kReachM;
 }
-
 
 Tour renderTour(OpticsLight light, OpticsCarpet carpet, BallKind ball, unsigned seed,
                 OpticsDistractors distractors = OpticsDistractors::RobotsFeetShadow)
@@ -84,15 +84,15 @@ Tour renderTour(OpticsLight light, OpticsCarpet carpet, BallKind ball, unsigned 
 }
 
 // Share of the ball frames within reach in which the detector finds the ball (Evaluation's
-// rules); `offLines`: only those whose ball does not touch a line.
-double detectionPct(const Tour& tour, const Config& config, bool offLines = false)
+// rules).
+double detectionPct(const Tour& tour, const Config& config)
 {
     Pipeline pipeline(config);
     PipelineResult result;
     int withBall = 0;
     int correct = 0;
     for (std::size_t f = 0; f < tour.rendered.frames.size(); ++f) {
-        if (!judged(tour, int(f)) || (offLines && touchesLine(tour.cell, int(f)))) continue;
+        if (!judged(tour, int(f))) continue;
         const TruthRow& truth = tour.rendered.truth.at(int(f));
         pipeline.process(tour.rendered.frames[f], PixelFormat::Bgr8, result);
         ++withBall;
@@ -225,6 +225,8 @@ class ColourDoneWhenTest : public QObject {
         Config config = startConfig(tour.rendered);
         QCOMPARE(config.colors.classes, defaultColourClasses());  // the start: the default colours
         const double before = detectionPct(tour, config);
+        // The tour exercises the calibration: the default colours miss it (the dim one's goal).
+        if (carpet == OpticsCarpet::Teal) QVERIFY2(before < kDoneWhenPct, qPrintable(QString::number(before)));
 
         const AutoColourResult r = autoColour(firstFrames(tour, kCalibrationFrames), tour.geometry, config.colors);
         QVERIFY2(r.ok(), r.error ? r.error->c_str() : "");
@@ -265,18 +267,18 @@ class ColourDoneWhenTest : public QObject {
         QVERIFY2(r.ok(), r.error ? r.error->c_str() : "");
         config.colors = r.colors;
         const double after = detectionPct(tour, config);
-        const double offLines = detectionPct(tour, config, true);
-        qInfo("%s: default colours %.0f %%, auto alone %.0f %%; balls off the lines %.0f %%", opticsCellName(tour.cell).c_str(),
-              before, after, offLines);
-        QVERIFY2(offLines >= kDoneWhenPct, qPrintable(QString::number(offLines)));
+        qInfo("%s: default colours %.0f %%, auto alone %.0f %%", opticsCellName(tour.cell).c_str(), before, after);
+        QVERIFY2(after >= kDoneWhenPct, qPrintable(QString::number(after)));
         QVERIFY2(after >= before, qPrintable(QString::number(after)));
     }
 
 private slots:
     void dimTourAutoThenStrokes() { calibrateThenStroke(OpticsLight::Dim, OpticsCarpet::Green, BallKind::Orange, 11); }
+    // A cyan-green carpet past the default green box (hue ~89, in the default cyan marker box):
+    // the default colours call most of it cyan.
     void cyanGreenCarpetAutoThenStrokes()
     {
-        calibrateThenStroke(OpticsLight::Normal, OpticsCarpet::CyanGreen, BallKind::Orange, 12);
+        calibrateThenStroke(OpticsLight::Normal, OpticsCarpet::Teal, BallKind::Orange, 12);
     }
     void autoAloneOnDimTour() { autoAlone(OpticsLight::Dim, OpticsCarpet::Green, 21); }
     void autoAloneOnBrightTour() { autoAlone(OpticsLight::Bright, OpticsCarpet::Green, 22); }

@@ -38,6 +38,7 @@ std::string opticsCarpetName(OpticsCarpet carpet)
     case OpticsCarpet::Green: return "green";
     case OpticsCarpet::CyanGreen: return "cyan-green";
     case OpticsCarpet::DarkGreen: return "dark-green";
+    case OpticsCarpet::Teal: return "teal";
     }
     return "green";
 }
@@ -95,6 +96,7 @@ cv::Vec3f carpetColour(OpticsCarpet carpet)
     case OpticsCarpet::Green: return {40, 140, 40};
     case OpticsCarpet::CyanGreen: return {100, 150, 35};  // hue ~83 deg: a blue-ish artificial turf
     case OpticsCarpet::DarkGreen: return {32, 92, 30};    // a worn, dark hall carpet
+    case OpticsCarpet::Teal: return {140, 145, 35};       // hue ~88: past the default green box
     }
     return {40, 140, 40};
 }

@@ -20,7 +20,10 @@ namespace omnitune {
 
 enum class OpticsLight { Dim, Normal, Bright, Uneven };
 enum class OpticsDistractors { None, RobotsFeetShadow, NoiseBlur, RodsOcclusion };
-enum class OpticsCarpet { Green, CyanGreen, DarkGreen };
+// Teal: a cyan-green turf whose hue lies past the default green box (and in the default cyan
+// marker box), as the carpets of issue 10's real frames; the colour tours use it, the quality
+// matrix does not (its colours are the defaults).
+enum class OpticsCarpet { Green, CyanGreen, DarkGreen, Teal };
 enum class OpticsMirror { Hyperbolic, Spherical };
 
 struct OpticsCell {
@@ -52,7 +55,7 @@ OpticsCellFrames renderCell(const OpticsCell& cell, const Config& base = {});
 std::string opticsCellName(const OpticsCell& cell);
 
 // Names used by the command line and opticsCellName: "dim", "normal", "bright", "uneven";
-// "none", "robots", "noise", "rods"; "green", "cyan-green", "dark-green"; "hyperbolic",
+// "none", "robots", "noise", "rods"; "green", "cyan-green", "dark-green", "teal"; "hyperbolic",
 // "spherical".
 std::string opticsLightName(OpticsLight light);
 std::string opticsDistractorsName(OpticsDistractors distractors);
