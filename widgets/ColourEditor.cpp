@@ -509,7 +509,8 @@ std::optional<QString> ColourEditor::autoColours()
     if (const auto why = commit(next, tr("Auto colours from frame %1").arg(run_->frameIndex))) return why;
     QStringList notes;
     for (const auto& n : r.notes) notes << QString::fromStdString(n);
-    emit message(tr("Auto colours: carpet hue %1 (%2 % of the processed pixels), median S %3, V %4%5")
+    // Short enough to show whole beside the stage timings (app/colour_done_when checks it).
+    emit message(tr("Auto colours: carpet hue %1 (%2 %), median S %3, V %4%5")
                      .arg(r.carpetHue).arg(r.carpetPct, 0, 'f', 0).arg(r.carpetS).arg(r.carpetV)
                      .arg(notes.isEmpty() ? QString() : QStringLiteral("; ") + notes.join(QStringLiteral("; "))));
     return std::nullopt;

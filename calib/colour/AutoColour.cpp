@@ -29,13 +29,13 @@ void trimOff(HsvRange& r, int lo, int hi, const std::string& name, std::vector<s
     const std::string was = std::to_string(r.hMin) + ".." + std::to_string(r.hMax);
     if (r.hMin >= lo && r.hMax <= hi) {
         r.enabled = false;
-        notes.push_back(name + " (hue " + was + ") lies inside the carpet's hues: disabled");
+        notes.push_back(name + " hue " + was + " disabled (the carpet's)");
         return;
     }
     if (r.hMin < lo) r.hMax = lo - 1;
     else r.hMin = hi + 1;
-    notes.push_back(name + " hue " + was + " overlapped the carpet's: now " + std::to_string(r.hMin) + ".." +
-                    std::to_string(r.hMax));
+    notes.push_back(name + " hue " + was + " -> " + std::to_string(r.hMin) + ".." + std::to_string(r.hMax) +
+                    " (off the carpet's)");
 }
 
 }  // namespace
