@@ -82,6 +82,7 @@ private slots:
     void headerAndTooltips();
     void thresholdsInTooltips();
     void candidateAccessor();
+    void prefilterRefusalsShowNoShape();
 };
 
 void CandidateModelTest::resetsUnderModelTester()
@@ -228,6 +229,29 @@ void CandidateModelTest::candidateAccessor()
     QCOMPARE(model.candidate(1).rejected, RejectReason::Circularity);
     QCOMPARE(model.candidate(0).accumulator, 412.0);
     QCOMPARE(model.index(1, Col::CircularityColumn).data(CandidateTableModel::SortRole).toDouble(), 41.66);
+}
+
+// The specific search lists its prefilter refusals after its candidates, and OpenCV's circles
+// come after them: the refusals' circularity and run-on were never measured, and say so.
+void CandidateModelTest::prefilterRefusalsShowNoShape()
+{
+    PipelineResult r = twoCandidates();
+    BallCandidate refused = makeCandidate(CandidateSource::SpecificHough, 3, 200, 100, RejectReason::NonGreen);
+    refused.scores = {40.0, 100.0, 0.0, 0.0};
+    r.candidates.insert(r.candidates.begin() + 1, refused);  // before OpenCV's circle
+    r.hough.prefilterListed = 1;
+    CandidateTableModel model;
+    model.setResult(r, Config{});
+    QVERIFY(!model.isPrefiltered(0));
+    QVERIFY(model.isPrefiltered(1));
+    QVERIFY(!model.isPrefiltered(2));
+    QCOMPARE(model.index(1, Col::CircularityColumn).data().toString(), QString("-"));
+    QCOMPARE(model.index(1, Col::RunOnColumn).data().toString(), QString("-"));
+    QCOMPARE(model.index(1, Col::NonGreenColumn).data().toString(), QString("40.0"));
+    QVERIFY(!model.index(1, Col::CircularityColumn).data(CandidateTableModel::SortRole).isValid());
+    QVERIFY(model.index(1, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Not validated"));
+    QCOMPARE(model.index(2, Col::CircularityColumn).data().toString(), QString("41.7"));
+    QVERIFY(!model.index(2, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Not validated"));
 }
 
 QTEST_MAIN(CandidateModelTest)

@@ -31,6 +31,12 @@ void CandidateTableModel::setResult(const PipelineResult& result, const Config& 
 {
     beginResetModel();
     candidates_ = result.candidates;
+    // The specific search lists its prefilter refusals after its own candidates (OpenCV's
+    // circles, appended later, are never prefiltered).
+    prefiltered_.assign(candidates_.size(), false);
+    int listed = result.hough.prefilterListed;
+    for (std::size_t i = candidates_.size(); i-- > 0 && listed > 0;)
+        if (candidates_[i].source != CandidateSource::OpenCvHough) prefiltered_[i] = true, --listed;
     setThresholds(config);
     endResetModel();
 }
@@ -39,6 +45,7 @@ void CandidateTableModel::clear()
 {
     beginResetModel();
     candidates_.clear();
+    prefiltered_.clear();
     endResetModel();
 }
 
@@ -48,6 +55,11 @@ void CandidateTableModel::setThresholds(const Config& config)
     const ValidationOptions& v = config.validation;
     thresholds_ = Thresholds{v.minNonGreenPct, v.minNonBlackPct, v.minCircularityPct, v.radiusTolerance, v.minRadiusPx,
                              config.hough.minAccumulator, config.opencvHough.maxRadiusRatio, v.maxRunOnPct};
+}
+
+bool CandidateTableModel::isPrefiltered(int row) const
+{
+    return row >= 0 && std::size_t(row) < prefiltered_.size() && prefiltered_[std::size_t(row)];
 }
 
 const BallCandidate& CandidateTableModel::candidate(int row) const
@@ -90,13 +102,14 @@ QVariant CandidateTableModel::data(const QModelIndex& index, int role) const
 {
     if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid)) return {};
     const BallCandidate& c = candidates_[std::size_t(index.row())];
+    const bool prefiltered = isPrefiltered(index.row());
     const int column = index.column();
     const bool accepted = c.rejected == RejectReason::None;
     const bool failed = isRejected(c.rejected) && column == failingColumn(c.rejected);
     switch (role) {
-    case Qt::DisplayRole: return display(c, column);
-    case SortRole: return sortValue(c, column);
-    case Qt::ToolTipRole: return cellToolTip(c, column);
+    case Qt::DisplayRole: return display(c, column, prefiltered);
+    case SortRole: return sortValue(c, column, prefiltered);
+    case Qt::ToolTipRole: return cellToolTip(c, column, prefiltered);
     case Qt::TextAlignmentRole:
         return column == SourceColumn || column == ResultColumn ? int(Qt::AlignLeft | Qt::AlignVCenter)
                                                                  : int(Qt::AlignRight | Qt::AlignVCenter);
@@ -119,9 +132,10 @@ QVariant CandidateTableModel::data(const QModelIndex& index, int role) const
     }
 }
 
-QVariant CandidateTableModel::display(const BallCandidate& c, int column) const
+QVariant CandidateTableModel::display(const BallCandidate& c, int column, bool prefiltered) const
 {
     const bool specific = c.source == CandidateSource::SpecificHough;
+    if (prefiltered && (column == CircularityColumn || column == RunOnColumn)) return QStringLiteral("-");
     switch (column) {
     case AreaColumn: return c.area >= 0 ? QString::number(c.area + 1) : QStringLiteral("-");
     case SourceColumn: return QString::fromUtf8(candidateSourceName(c.source).data(), int(candidateSourceName(c.source).size()));
@@ -139,12 +153,13 @@ QVariant CandidateTableModel::display(const BallCandidate& c, int column) const
     return {};
 }
 
-QVariant CandidateTableModel::sortValue(const BallCandidate& c, int column) const
+QVariant CandidateTableModel::sortValue(const BallCandidate& c, int column, bool prefiltered) const
 {
+    if (prefiltered && (column == CircularityColumn || column == RunOnColumn)) return {};  // not measured
     switch (column) {
     case AreaColumn: return c.area;
     case SourceColumn:
-    case ResultColumn: return display(c, column);
+    case ResultColumn: return display(c, column, prefiltered);
     case XColumn: return c.x;
     case YColumn: return c.y;
     case RadiusColumn: return c.radiusPx;
@@ -227,9 +242,12 @@ QString CandidateTableModel::columnToolTip(int column) const
     return {};
 }
 
-QString CandidateTableModel::cellToolTip(const BallCandidate& c, int column) const
+QString CandidateTableModel::cellToolTip(const BallCandidate& c, int column, bool prefiltered) const
 {
     QString tip = columnToolTip(column);
+    if (prefiltered && (column == CircularityColumn || column == RunOnColumn || column == ResultColumn))
+        tip += tr("\nNot validated: the candidate prefilter (hough.prefilter_*) refused it on its square's colour or "
+                  "at the mirror rim, so its shape was never measured.");
     if (column == RadiusColumn && c.expectedRadiusPx > 0.0)
         tip += tr("\nExpected radius here: %1 px.").arg(number(c.expectedRadiusPx, 1));
     if (!isRejected(c.rejected) || column != failingColumn(c.rejected)) return tip;

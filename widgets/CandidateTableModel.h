@@ -44,6 +44,10 @@ public:
     void clear();
 
     const BallCandidate& candidate(int row) const;
+    // Whether the row is a refusal of the candidate prefilter (hough.prefilter_*): judged on its
+    // square's colour or the rim before validation, so its circularity and run-on were never
+    // measured (shown as "-").
+    bool isPrefiltered(int row) const;
     // Row of the accepted ball, -1 when none was accepted.
     int acceptedRow() const;
     // The column holding the score that rejected the candidate, -1 when none does (accepted,
@@ -68,12 +72,13 @@ private:
     };
 
     void setThresholds(const Config& config);
-    QVariant display(const BallCandidate& c, int column) const;
-    QVariant sortValue(const BallCandidate& c, int column) const;
+    QVariant display(const BallCandidate& c, int column, bool prefiltered) const;
+    QVariant sortValue(const BallCandidate& c, int column, bool prefiltered) const;
     QString columnToolTip(int column) const;
-    QString cellToolTip(const BallCandidate& c, int column) const;
+    QString cellToolTip(const BallCandidate& c, int column, bool prefiltered) const;
 
     std::vector<BallCandidate> candidates_;
+    std::vector<bool> prefiltered_;  // per row: isPrefiltered
     Thresholds thresholds_;
 };
 
