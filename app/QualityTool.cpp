@@ -25,6 +25,7 @@ std::vector<OptionSpec> qualityToolOptions()
         {"threads", true, false, "N     with --quality-matrix: cells on N threads (default 1, honest timings; 0: all)"},
         {"misses", false, false, "      with --quality-matrix: why balls were missed and what false positives hit, per condition"},
         {"cells", true, false, "A,B   with --quality-matrix: only the cells whose name holds every one of these parts (e.g. dim,rods)"},
+        {"auto-colours", true, false, "N     with --quality-matrix: each cell's colours by Auto colours from N frames of its field and light (default 0: the default colours)"},
         {"deviations", true, false, "FILE  with --quality-matrix: also run each deviation from the thesis switched off (specific, combined)"},
     };
 }
@@ -93,6 +94,11 @@ int runQualityTool(const CommandLine& cl)
         const auto v = parseInt(*t);
         if (!v || *v < 0 || *v > 256) return fail("--threads must be a whole number from 0 to 256, not '" + *t + "'");
         runOptions.threads = *v;
+    }
+    if (auto t = cl.value("auto-colours")) {
+        const auto v = parseInt(*t);
+        if (!v || *v < 0 || *v > 30) return fail("--auto-colours must be a whole number from 0 to 30, not '" + *t + "'");
+        runOptions.autoColourFrames = *v;
     }
     std::vector<OpticsCell> cells = qualityMatrixCells(matrix);
     if (auto parts = cl.value("cells")) {

@@ -287,6 +287,26 @@ private slots:
         QVERIFY(filterOpticsCells(all, "dim,no-such-part").empty());
     }
 
+    // --auto-colours: each cell's colours from Auto colours on frames of its own field (another
+    // seed). On a carpet past the default green box the default colours lose most balls; the
+    // calibrated ones find them, and the calibration never sees the judged frames' truth.
+    void autoColoursCalibrateEachCell()
+    {
+        OpticsCell cell;
+        cell.carpet = OpticsCarpet::Teal;
+        cell.frames = 8;
+        cell.seed = 7;
+        QualityRunOptions options;
+        const QualityTally byDefault = qualityTotal(runQuality({cell}, algorithmVariants(), {}, options), 0);
+        options.autoColourFrames = 2;
+        const QualityTally calibrated = qualityTotal(runQuality({cell}, algorithmVariants(), {}, options), 0);
+        QCOMPARE(calibrated.withBall, byDefault.withBall);
+        qInfo("teal carpet, specific: default colours %d, Auto colours %d of %d balls", byDefault.correct, calibrated.correct,
+              calibrated.withBall);
+        QVERIFY2(calibrated.correct >= byDefault.correct + 3,
+                 qPrintable(QString("%1 -> %2 of %3").arg(byDefault.correct).arg(calibrated.correct).arg(calibrated.withBall)));
+    }
+
     void floors_data()
     {
         QTest::addColumn<QString>("algorithm");

@@ -1,5 +1,7 @@
 #include "calib/eval/QualityRun.h"
 
+#include "calib/colour/AutoColour.h"
+
 #include "core/ConfigWriter.h"
 #include "core/Pipeline.h"
 #include "core/Stopwatch.h"
@@ -101,6 +103,9 @@ std::string configKey(const Config& c)
 
 namespace {
 
+// Mixed into a cell's seed for its colour-calibration frames: other ball positions and noise.
+constexpr unsigned kCalibrationSeedSalt = 0x5eedc01u;
+
 // One thread's share of a run: its own pipelines, one per (variant, config).
 class CellRunner {
 public:
@@ -112,7 +117,8 @@ public:
     QualityCellResult run(const OpticsCell& cell, double& renderMs)
     {
         Stopwatch renderClock;
-        const OpticsCellFrames rendered = renderCell(cell, base_);
+        OpticsCellFrames rendered = renderCell(cell, base_);
+        if (options_.autoColourFrames > 0) autoColours(cell, rendered);
         renderMs += renderClock.total();
         QualityCellResult cr;
         cr.cell = cell;
@@ -135,6 +141,19 @@ public:
     }
 
 private:
+    // QualityRunOptions::autoColourFrames: the cell's colours from frames of its own field and
+    // light (another seed). A calibration that fails keeps the default colours, as a user would.
+    void autoColours(const OpticsCell& cell, OpticsCellFrames& rendered) const
+    {
+        OpticsCell calibration = cell;
+        calibration.seed = cell.seed ^ kCalibrationSeedSalt;
+        calibration.frames = options_.autoColourFrames;
+        const OpticsCellFrames frames = renderCell(calibration, base_);
+        Config& config = rendered.fittedConfig;
+        const AutoColourResult r = autoColour(frames.frames, Geometry(config.geometry, config.mask), config.colors);
+        if (r.ok()) config.colors = r.colors;
+    }
+
     QualityTally judgeFrames(Pipeline& pipeline, const Config& config, const OpticsCellFrames& rendered)
     {
         QualityTally tally;

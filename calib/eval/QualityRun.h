@@ -70,6 +70,11 @@ struct QualityRunOptions {
     // Detection and false-positive figures do not depend on it; per-frame times do (threads
     // share the cores and caches): 1 for timings worth quoting.
     int threads = 1;
+    // Colours as a team sets them at the venue: Colours > Auto colours (calib/colour/AutoColour)
+    // on this many frames of the cell's field and light, rendered with another seed than the
+    // judged frames (no truth is used), replace the fitted config's default colours. 0: the
+    // default colours (the matrix as the gate runs it).
+    int autoColourFrames = 0;
 };
 
 struct QualityRun {
