@@ -3,9 +3,8 @@
 // leave it into an object that is neither carpet nor line are left out of the circularity, so
 // the ball passes on the rays that open onto carpet; blobs without the ball's class, and a ball
 // spot swallowed by an object, get no such allowance.
-#include "DrawnScene.h"
+#include "DrawnCandidate.h"
 #include "core/ForeignContact.h"
-#include "core/Validation.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -21,31 +20,10 @@ constexpr double kAngle = 30.0;      // degrees
 const cv::Scalar kGrey(110, 110, 110);  // trousers: no class (neither carpet, line nor black)
 const cv::Scalar kCyan(200, 170, 20);   // a robot's cyan marker: a marker class
 
-QString verdict(const BallCandidate& c)
-{
-    return QString("rejected by %1 (scores %2 / %3 / circularity %4, run-on %5)")
-        .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
-        .arg(c.scores.nonGreenPct)
-        .arg(c.scores.nonBlackPct)
-        .arg(c.scores.circularityPct)
-        .arg(c.scores.runOnPct);
-}
-
 template <class Draw>
 BallCandidate validateDrawn(const Config& c, Draw draw)
 {
-    cv::Mat frame = greenField(c);
-    const cv::Point2d p = pointAt(c, kDistance, kAngle);
-    const cv::Point centre(int(std::lround(p.x)), int(std::lround(p.y)));
-    draw(frame, centre, expectedRadius(c, kDistance));
-    const EdgeStages s(c, frame);
-    BallCandidate cand;
-    cand.x = centre.x;
-    cand.y = centre.y;
-    cand.distancePx = s.geometry.distanceAt(centre.x, centre.y);
-    cand.expectedRadiusPx = s.ball.radiusAt(cand.distancePx);
-    validateCandidate(cand, s.classes, s.edges, s.geometry, s.ball, c.validation, nullptr, ColourRoles(c.colors.classes));
-    return cand;
+    return omnitune::test::validateDrawn(c, kDistance, kAngle, draw);
 }
 
 // An orange ball of radius r at p against an object of colour `object` that covers a third of
@@ -78,14 +56,8 @@ private slots:
     {
         QFETCH(int, kind);
         QFETCH(bool, cyan);
-        Config c;
-        const auto draw = [&](cv::Mat& f, cv::Point p, double r) { drawBallAgainst(f, p, r, cyan ? kCyan : kGrey, kind); };
-        const BallCandidate on = validateDrawn(c, draw);
-        QVERIFY2(on.rejected == RejectReason::None, qPrintable(verdict(on)));
-        c.validation.foreignRaysUnknown = false;
-        const BallCandidate off = validateDrawn(c, draw);
-        QVERIFY2(off.rejected == RejectReason::Circularity, qPrintable(verdict(off)));
-        QVERIFY(off.scores.circularityPct < on.scores.circularityPct);
+        checkRuleAcceptsIt(Config{}, &ValidationOptions::foreignRaysUnknown, kDistance, kAngle,
+                           [&](cv::Mat& f, cv::Point p, double r) { drawBallAgainst(f, p, r, cyan ? kCyan : kGrey, kind); });
     }
 
     // Look-alikes stay rejected: a grey blob the size of a ball beside a grey block (its centre
@@ -153,14 +125,7 @@ private slots:
         const ValidationOptions& o = c.validation;
         ForeignContactRay ray(classes, geometry, roles, ball, x, y, 1.0, 0.0, o.lineContactMinEntry * radius,
                               o.lineContactReach * radius);
-        bool met = false;
-        cv::Point last(-1, -1);
-        for (double r = 0.5; r <= 2.0 * radius && !met; r += 0.5) {
-            const cv::Point q(int(std::lround(x + r)), y);
-            if (q == last) continue;
-            last = q;
-            met = ray.entersObject(q, r);
-        }
+        const bool met = walkRayAlongX(x, y, 2.0 * radius, [&](cv::Point q, double r) { return ray.entersObject(q, r); });
         QCOMPARE(met, contact);
     }
 };

@@ -2,9 +2,8 @@
 // leave the ball into the line are left out of the circularity, so the ball passes on the rays
 // that open onto carpet; line corners, line ends and white panels ending at the ball's border get
 // no such allowance.
-#include "DrawnScene.h"
+#include "DrawnCandidate.h"
 #include "core/LineContact.h"
-#include "core/Validation.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -19,32 +18,10 @@ namespace {
 constexpr double kDistance = 120.0;  // px from the robot centre: a ball of ~10 px radius
 constexpr double kAngle = 30.0;      // degrees
 
-QString verdict(const BallCandidate& c)
-{
-    return QString("rejected by %1 (scores %2 / %3 / circularity %4, run-on %5)")
-        .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
-        .arg(c.scores.nonGreenPct)
-        .arg(c.scores.nonBlackPct)
-        .arg(c.scores.circularityPct)
-        .arg(c.scores.runOnPct);
-}
-
-// The candidate at the drawn ball's centre, validated under `c` on the frame `draw` made.
 template <class Draw>
 BallCandidate validateDrawn(const Config& c, Draw draw)
 {
-    cv::Mat frame = greenField(c);
-    const cv::Point2d p = pointAt(c, kDistance, kAngle);
-    const cv::Point centre(int(std::lround(p.x)), int(std::lround(p.y)));
-    draw(frame, centre, expectedRadius(c, kDistance));
-    const EdgeStages s(c, frame);
-    BallCandidate cand;
-    cand.x = centre.x;
-    cand.y = centre.y;
-    cand.distancePx = s.geometry.distanceAt(centre.x, centre.y);
-    cand.expectedRadiusPx = s.ball.radiusAt(cand.distancePx);
-    validateCandidate(cand, s.classes, s.edges, s.geometry, s.ball, c.validation);
-    return cand;
+    return omnitune::test::validateDrawn(c, kDistance, kAngle, draw);
 }
 
 // An orange ball of radius r at p lying on the edge of a line as wide as a field line (~1.1 ball
@@ -80,14 +57,8 @@ private slots:
     void ballTouchingLinePasses()
     {
         QFETCH(int, kind);
-        Config c;
-        const auto draw = [kind](cv::Mat& f, cv::Point p, double r) { drawBallOnLine(f, p, r, kind); };
-        const BallCandidate on = validateDrawn(c, draw);
-        QVERIFY2(on.rejected == RejectReason::None, qPrintable(verdict(on)));
-        c.validation.lineRaysUnknown = false;
-        const BallCandidate off = validateDrawn(c, draw);
-        QVERIFY2(off.rejected == RejectReason::Circularity, qPrintable(verdict(off)));
-        QVERIFY(off.scores.circularityPct < on.scores.circularityPct);
+        checkRuleAcceptsIt(Config{}, &ValidationOptions::lineRaysUnknown, kDistance, kAngle,
+                           [kind](cv::Mat& f, cv::Point p, double r) { drawBallOnLine(f, p, r, kind); });
     }
 
     // Look-alikes stay rejected: a junction of two lines as wide as the ball whose centre pixel is
@@ -155,14 +126,7 @@ private slots:
         const ValidationOptions& o = c.validation;
         LineContactRay ray(classes, geometry, roles, x, y, 1.0, 0.0, o.lineContactMinEntry * radius,
                            o.lineContactReach * radius);
-        bool met = false;
-        cv::Point last(-1, -1);
-        for (double r = 0.5; r <= 2.0 * radius && !met; r += 0.5) {
-            const cv::Point q(int(std::lround(x + r)), y);
-            if (q == last) continue;
-            last = q;
-            met = ray.entersLine(q, r);
-        }
+        const bool met = walkRayAlongX(x, y, 2.0 * radius, [&](cv::Point q, double r) { return ray.entersLine(q, r); });
         QCOMPARE(met, contact);
     }
 };
