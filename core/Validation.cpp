@@ -3,9 +3,9 @@
 #include "core/BallModel.h"
 #include "core/ColorClass.h"
 #include "core/ExpectedRadius.h"
+#include "core/ForeignContact.h"
 #include "core/Geometry.h"
 #include "core/GreenPanelTest.h"
-#include "core/ForeignContact.h"
 #include "core/LineContact.h"
 
 #include <algorithm>
