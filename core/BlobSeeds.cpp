@@ -66,7 +66,7 @@ void BlobSeeds::keep(const BlobSeed& seed, int maxSeeds)
 }
 
 const std::vector<BlobSeed>& BlobSeeds::find(const cv::Mat& binary, const Geometry& geometry, const BallModel& ball,
-                                             int maxSeeds)
+                                             int maxSeeds, bool squashed)
 {
     CV_Assert(binary.type() == CV_8UC1 && binary.size() == geometry.imageSize() && binary.isContinuous());
     maxSeeds = std::max(0, maxSeeds);
@@ -90,8 +90,10 @@ const std::vector<BlobSeed>& BlobSeeds::find(const cv::Mat& binary, const Geomet
             const double radius = expectedRadiusAt(geometry, ball, cx, cy);
             const double ratio = r.area / (M_PI * radius * radius);
             if (ratio < kMinAreaRatio || ratio > kMaxAreaRatio) continue;
-            // Compact: no side longer than the ball (plus a pixel of blur either side).
-            const double side = 2.0 * radius + 2.0;
+            // Compact: no side longer than the ball (plus a pixel of blur either side); squashed,
+            // its longer (tangential) axis is radius / sqrt(squash).
+            const double squash = squashed ? ball.squashAt(geometry.distanceAt(cx, cy)) : 1.0;
+            const double side = 2.0 * radius / std::sqrt(std::min(1.0, squash)) + 2.0;
             if (r.x1 - r.x0 + 1 > side || r.y1 - r.y0 + 1 > side) continue;
             keep(BlobSeed{cx, cy, std::abs(std::log(ratio))}, maxSeeds);
         }

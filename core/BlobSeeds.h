@@ -25,7 +25,11 @@ public:
     // ball; best fitting first (ties: in raster order of their first pixel), at most maxSeeds.
     // The result lives until the next call. Its buffers are kept: once warm (same image size,
     // maxSeeds no larger) a call allocates nothing.
-    const std::vector<BlobSeed>& find(const cv::Mat& binary, const Geometry& geometry, const BallModel& ball, int maxSeeds);
+    // `squashed` (hough.seeds_squashed): the box may be as long as the ball's tangential axis,
+    // r / sqrt(squash), where the model squashes the ball radially (a far ball in a spherical
+    // mirror is an ellipse twice as wide as deep, wider than a circle of its area-equivalent r).
+    const std::vector<BlobSeed>& find(const cv::Mat& binary, const Geometry& geometry, const BallModel& ball, int maxSeeds,
+                                      bool squashed = false);
 
     // A ball partly behind a rod or the robot still counts; a line piece or a robot is larger.
     static constexpr double kMinAreaRatio = 0.35;

@@ -329,6 +329,10 @@ std::vector<ConfigKey> buildSchema()
                         "Blob seeds are flooded with the black classes as background, so a ball beside a robot is a blob of its "
                         "own (else one region with the robot, too large for a seed); off: every non-green pixel joins a blob",
                         [](auto& c) -> auto& { return c.hough.seedsWithoutBlack; }));
+    s.push_back(boolKey("hough.seeds_squashed", false,
+                        "A blob seed's bounding box may be as long as the ball's tangential axis where ball.squash_* flattens "
+                        "it radially (a far ball in a spherical mirror); off: no side longer than the area-equivalent diameter",
+                        [](auto& c) -> auto& { return c.hough.seedsSquashed; }));
 
     // OpenCV Hough
     s.push_back(doubleKey("opencv_hough.dp", "ratio", 1, 4, true, "Inverse accumulator resolution of cv::HoughCircles (1: the image's, larger: coarser and faster)",

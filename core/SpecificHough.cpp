@@ -141,7 +141,8 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
             }
             seedImage = &seedBinary_;
         }
-        seeds = &blobs_.find(*seedImage, *geometry_, *ball_, std::max(1, options_.maxCandidates / 4));
+        seeds = &blobs_.find(*seedImage, *geometry_, *ball_, std::max(1, options_.maxCandidates / 4),
+                             options_.seedsSquashed);
         reserved = int(seeds->size());
     }
     findMaxima(binary, std::max(1, options_.maxCandidates - reserved));

@@ -60,6 +60,8 @@ struct SpecificHoughOptions {
     // Blob seeds are flooded with the black classes counted as background (a ball beside a
     // robot is then a blob of its own); needs the classes image.
     bool seedsWithoutBlack = false;  // off: +1 ball at 2 frames per cell, -3 at 1 (rods cells +3)
+    // A seed's box may be as long as the squashed ball's tangential axis (BlobSeeds::find).
+    bool seedsSquashed = true;
 };
 
 // What one process() call did with the edge pixels.
