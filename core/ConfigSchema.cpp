@@ -536,7 +536,7 @@ std::vector<ConfigKey> buildSchema()
                           [](auto& c) -> auto& { return c.validation.rimBandPx; }));
     s.push_back(doubleKey("validation.rim_inward_cos", "cosine", -1, 1, false,
                           "rim_test: the rays judged are those within the half-angle of this cosine of the direction to the "
-                          "mirror centre (0.3: about 73 degrees either side)",
+                          "mirror centre; larger judges fewer rays, nearer the inward direction",
                           [](auto& c) -> auto& { return c.validation.rimInwardCos; }));
     s.push_back(doubleKey("validation.rim_min_width", "fraction", 0, 10, false,
                           "rim_test: the candidate's non-field run along its arc (through its centre, both ways) must be at "
