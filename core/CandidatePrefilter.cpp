@@ -18,7 +18,9 @@ CandidatePrefilter candidatePrefilterFor(const Config& config)
     }
     p.roles = ColourRoles(config.colors.classes);
     p.tooSmallBelowPx = v.minRadiusPx;
-    if (config.hough.prefilterRim && v.refuseAtRim) p.maxReachPx = config.geometry.outerRadius - v.rimMarginPx;
+    // The rim test (validation.rim_test) judges circles up to rim_max_overhang_px farther out.
+    if (config.hough.prefilterRim && v.refuseAtRim)
+        p.maxReachPx = config.geometry.outerRadius - v.rimMarginPx + (v.rimTest ? v.rimMaxOverhangPx : 0.0);
     return p;
 }
 

@@ -522,6 +522,38 @@ std::vector<ConfigKey> buildSchema()
                           "radial_squash: candidates whose expected radius is below this keep the circle (a small ball's squash lies "
                           "inside the band anyway, and the ellipse's longer reach meets clutter at the rim)",
                           [](auto& c) -> auto& { return c.validation.squashMinRadiusPx; }));
+    s.push_back(boolKey("validation.rim_test", false,
+                        "refuse_at_rim: a circle reaching up to rim_max_overhang_px past the rim is judged instead of refused "
+                        "when its inward side is closed (rim_min_closed_pct of its inward rays meet carpet at its border): a far "
+                        "ball on the carpet passes, a robot marker or a line end cut by the rim does not; off: refused",
+                        [](auto& c) -> auto& { return c.validation.rimTest; }));
+    s.push_back(doubleKey("validation.rim_max_overhang_px", "px", 0, 50, false,
+                          "rim_test: how far past geometry.outer_radius less rim_margin_px a judged circle may reach (also "
+                          "what hough.prefilter_rim lets through); larger judges balls farther into the rim, and more clutter",
+                          [](auto& c) -> auto& { return c.validation.rimMaxOverhangPx; }));
+    s.push_back(doubleKey("validation.rim_min_closed_pct", "%", 0, 100, false,
+                          "rim_test: the share of the inward rays (towards the mirror centre) whose first carpet pixel lies "
+                          "within rim_band_px of the expected radius; lower passes more balls in shade, and more markers",
+                          [](auto& c) -> auto& { return c.validation.rimMinClosedPct; }));
+    s.push_back(doubleKey("validation.rim_band_px", "px", 0, 20, false,
+                          "rim_test: how far from the expected radius an inward ray's first carpet pixel may lie",
+                          [](auto& c) -> auto& { return c.validation.rimBandPx; }));
+    s.push_back(doubleKey("validation.rim_inward_cos", "cosine", -1, 1, false,
+                          "rim_test: the rays judged are those within the half-angle of this cosine of the direction to the "
+                          "mirror centre; larger judges fewer rays, nearer the inward direction",
+                          [](auto& c) -> auto& { return c.validation.rimInwardCos; }));
+    s.push_back(doubleKey("validation.rim_min_width", "fraction", 0, 10, false,
+                          "rim_test: the candidate's non-field run along its arc (through its centre, both ways) must be at "
+                          "least this share of the ball's expected width there (the squashed ellipse's tangential axis): robot "
+                          "markers and line ends cut by the rim are narrower than a ball",
+                          [](auto& c) -> auto& { return c.validation.rimMinWidth; }));
+    s.push_back(doubleKey("validation.rim_max_width", "fraction", 0, 10, false,
+                          "rim_test: and at most this share of it: a line along the rim, or a ball merged with clutter, runs on",
+                          [](auto& c) -> auto& { return c.validation.rimMaxWidth; }));
+    s.push_back(doubleKey("validation.rim_min_radius_px", "px", 0, 100, false,
+                          "rim_test: a circle that passes it is validated from this expected radius on, instead of "
+                          "min_radius_px (its closed inward side is what a small line corner lacks)",
+                          [](auto& c) -> auto& { return c.validation.rimMinRadiusPx; }));
 
     // validation of a ball touching a field line (issue 9: ball and line are one blob)
     s.push_back(boolKey("validation.line_rays_unknown", false,

@@ -7,6 +7,7 @@
 #include "core/Geometry.h"
 #include "core/GreenPanelTest.h"
 #include "core/LineContact.h"
+#include "core/RimTest.h"
 
 #include <algorithm>
 #include <climits>
@@ -393,9 +394,9 @@ void scoreRunOn(const Circle& c, ValidationScores& s)
 }
 
 // The first test a scored candidate fails, in the thesis' order and then ours.
-RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& options, bool hintKnown)
+RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& options, bool hintKnown, double minRadiusPx)
 {
-    if (c.expectedRadiusPx < options.minRadiusPx) return RejectReason::TooSmall;
+    if (c.expectedRadiusPx < minRadiusPx) return RejectReason::TooSmall;
     // The known ball colour shows the candidate is neither carpet nor robot.
     const bool hinted = hintKnown && c.scores.hintPct >= options.ballHintMinPct;
     if (!hinted && c.scores.nonGreenPct < options.minNonGreenPct) return RejectReason::NonGreen;
@@ -460,11 +461,27 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
     c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, square, classes, edges, geometry, options, colour, roles,
                            ball.squashAt(c.distancePx));
     if (c.rejected != RejectReason::None) return;  // already out (outside the area, too large)
-    if (options.refuseAtRim && c.distancePx + c.expectedRadiusPx > geometry.options().outerRadius - options.rimMarginPx) {
-        c.rejected = RejectReason::OutsideArea;
-        return;
+    double minRadiusPx = options.minRadiusPx;
+    const double overhang = rimOverhangPx(c.distancePx, c.expectedRadiusPx, geometry.options().outerRadius, options.rimMarginPx);
+    if (options.refuseAtRim && overhang > 0.0) {
+        // Cut by the rim: judged only when its inward side and its width show a ball on the carpet.
+        bool judged = options.rimTest && overhang <= options.rimMaxOverhangPx;
+        if (judged) {
+            const double squash = options.radialSquash ? ball.squashAt(c.distancePx) : 1.0;
+            const double width = rimExpectedWidthPx(c.expectedRadiusPx, squash);
+            const double run = rimArcRunPx(classes, geometry, roles, c.x, c.y, options.rimMaxWidth * width);
+            judged = run >= options.rimMinWidth * width && run <= options.rimMaxWidth * width &&
+                     rimClosure(classes, geometry, roles, c.x, c.y, c.expectedRadiusPx, squash, options.rimBandPx,
+                                options.rimInwardCos)
+                             .closedPct() >= options.rimMinClosedPct;
+        }
+        if (!judged) {
+            c.rejected = RejectReason::OutsideArea;
+            return;
+        }
+        minRadiusPx = std::min(minRadiusPx, options.rimMinRadiusPx);
     }
-    c.rejected = firstFailedTest(c, options, roles.idOf(options.ballHint) != ColorClass::Unknown);
+    c.rejected = firstFailedTest(c, options, roles.idOf(options.ballHint) != ColorClass::Unknown, minRadiusPx);
 }
 
 }  // namespace omnitune

@@ -170,6 +170,28 @@ struct ValidationOptions {
     // %; the square's non-green share by colour alone (the white panels) from which its green
     // panels count in the non-green test: a green-and-white ball shows ~55 %.
     double greenPanelMinOwnPct = 45.0;
+
+    // With refuseAtRim, a candidate whose expected circle reaches up to rimMaxOverhangPx past
+    // outer_radius - rimMarginPx is judged instead of refused when its inward side is closed
+    // (core/RimTest.h): at least rimMinClosedPct of its inward rays (within the half-angle whose
+    // cosine is rimInwardCos of the direction to the mirror centre) meet the carpet within
+    // rimBandPx of the expected radius. A far ball on the carpet passes; a robot marker (the
+    // robot's dark body inwards) and a line end (line inwards) do not. Off: every such circle
+    // is refused.
+    bool rimTest = true;
+    double rimMaxOverhangPx = 3.5;  // px
+    double rimMinClosedPct = 80.0;  // %
+    double rimBandPx = 1.5;         // px
+    double rimInwardCos = 0.3;      // cosine of the half-angle
+    // Fractions of the ball's expected width along its arc (the squashed ellipse's tangential
+    // axis); the candidate's non-field run along the arc through its centre (core/RimTest.h) must
+    // lie between them. Optics matrix: rim balls 0.63-1.17, robot markers and line ends cut by the
+    // rim 0.57-0.83 (narrower than a ball there), a line along the rim 4.5.
+    double rimMinWidth = 0.78;
+    double rimMaxWidth = 1.4;
+    // px; a candidate that passes the rim test is validated from this expected radius on (instead
+    // of minRadiusPx): the closed inward side is what a line corner of that size lacks.
+    double rimMinRadiusPx = 3.5;
 };
 
 // Scores one candidate and sets its `rejected` field (first failing test: too small, then the

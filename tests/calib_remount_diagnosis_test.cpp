@@ -173,7 +173,9 @@ private slots:
         QVERIFY(reach1 < reach0 - 0.5);
         // The whole-tour gap comes from the balls beyond the remounted ring's reach: there the
         // remounted camera misses nearly all (out of area at the rim, no candidate past it)...
-        QVERIFY2(out1.ratio() < out0.ratio() - 40, qPrintable(causes(out0) + " | " + causes(out1)));
+        // (validation.rim_test judges balls cut by the rim: beyond the reach the original camera
+        // finds 75 %, the remounted 48 %; 51 and 2 % with every such ball refused.)
+        QVERIFY2(out1.ratio() < out0.ratio() - 20, qPrintable(causes(out0) + " | " + causes(out1)));
         const int rimMisses = out1.causes[std::size_t(MissCause::OutOfRange)] + out1.causes[std::size_t(MissCause::NoCandidate)];
         QVERIFY2(rimMisses >= (out1.visible - out1.found) * 9 / 10, qPrintable(causes(out1)));
         // ...and within it the two cameras find the same share of balls, within 2 points.

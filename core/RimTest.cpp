@@ -1,0 +1,75 @@
+#include "core/RimTest.h"
+
+#include "core/Geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace omnitune {
+
+RimClosure rimClosure(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
+                      double radius, double squash, double bandPx, double minInwardCos)
+{
+    RimClosure out;
+    const double ix = geometry.options().centerX - x;
+    const double iy = geometry.options().centerY - y;
+    const double il = std::hypot(ix, iy);
+    if (!(il > 0.0) || !(radius > 0.0)) return out;
+    const int rays = std::max(16, int(std::ceil(2.0 * M_PI * radius)));
+    const double q = squash > 0.0 ? squash : 1.0;
+    for (int i = 0; i < rays; ++i) {
+        const double a = 2.0 * M_PI * i / rays;
+        const double ca = std::cos(a);
+        const double sa = std::sin(a);
+        const double cr = -(ca * ix + sa * iy) / il;  // along the outward radial axis
+        if (-cr < minInwardCos) continue;
+        const double ct = (sa * ix - ca * iy) / il;  // along the tangential one
+        // The ellipse of the same area as the circle, squashed radially (BallModel::squashAt).
+        const double border = radius / std::sqrt(cr * cr / q + q * ct * ct);
+        const double rMin = std::max(0.5, border - bandPx);
+        const double rMax = border + bandPx;
+        bool judged = true;
+        bool closed = false;
+        for (double r = 0.5; r <= rMax + 1e-9; r += 0.5) {
+            const int px = int(std::lround(x + r * ca));
+            const int py = int(std::lround(y + r * sa));
+            if (px < 0 || py < 0 || px >= classes.cols || py >= classes.rows || !geometry.isUsed(px, py)) {
+                judged = false;  // a rod or the body in the way: says nothing
+                break;
+            }
+            const std::uint8_t cls = classes.ptr<std::uint8_t>(py)[px];
+            if (roles.field(cls)) {
+                closed = r >= rMin - 1e-9;
+                break;
+            }
+        }
+        out.judged += judged;
+        out.closed += judged && closed;
+    }
+    return out;
+}
+
+double rimArcRunPx(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
+                   double maxEachWayPx)
+{
+    const double cx = geometry.options().centerX;
+    const double cy = geometry.options().centerY;
+    const double d = std::hypot(x - cx, y - cy);
+    if (!(d > 1.0)) return 0.0;
+    const double a0 = std::atan2(y - cy, x - cx);
+    double run = 0.0;
+    for (const double way : {1.0, -1.0}) {
+        double s = 0.5;
+        for (; s <= maxEachWayPx + 1e-9; s += 0.5) {
+            const double a = a0 + way * s / d;
+            const int px = int(std::lround(cx + d * std::cos(a)));
+            const int py = int(std::lround(cy + d * std::sin(a)));
+            if (px < 0 || py < 0 || px >= classes.cols || py >= classes.rows || !geometry.isUsed(px, py)) break;
+            if (roles.field(classes.ptr<std::uint8_t>(py)[px])) break;
+        }
+        run += std::min(s, maxEachWayPx);
+    }
+    return run;
+}
+
+}  // namespace omnitune

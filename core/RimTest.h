@@ -1,0 +1,55 @@
+#pragma once
+// A candidate at the mirror rim (issue 9): its circle reaches past the outer radius, so the
+// circularity sees only its inner part, which the cut-off ends of field lines and robot markers
+// pass as well as a far ball does. What tells them apart is the inward side. A ball lies on the
+// carpet: walking inwards (towards the mirror centre) from its centre, carpet starts at its
+// border. A marker sits on a robot's dark body, a line end runs on inwards as line: their
+// inward rays meet something else, or carpet too early or too late.
+#include "core/ColourClasses.h"
+
+#include <opencv2/core.hpp>
+
+#include <cmath>
+
+namespace omnitune {
+
+class Geometry;
+
+// The inward rays of one candidate: those within the half-angle whose cosine is minInwardCos of
+// the direction towards the mirror centre. A ray is judged when it stays on processed pixels;
+// it is closed when the first field pixel it meets lies within bandPx of the ball's border:
+// the ellipse of the circle's area squashed radially by `squash` (radial over tangential
+// semi-axis, BallModel::squashAt; 1: the circle). Far balls at the rim of a spherical mirror are
+// squashed to ~0.6, which a robot's upright marker is not.
+struct RimClosure {
+    int judged = 0;
+    int closed = 0;
+    // % of the judged rays that are closed; 0 without judged rays.
+    double closedPct() const { return judged > 0 ? 100.0 * closed / judged : 0.0; }
+};
+
+RimClosure rimClosure(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
+                      double radius, double squash, double bandPx, double minInwardCos);
+
+// How far (px, both ways added) the candidate's non-field pixels run on along the arc of its own
+// distance from the mirror centre, through its centre: about the ball's width for a ball, but a
+// line along the rim, or a robot's row of markers and its dark body, runs on. Each way stops at
+// the first field or unprocessed pixel, or after maxEachWayPx.
+double rimArcRunPx(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
+                   double maxEachWayPx);
+
+// The ball's width (px) along its arc: the tangential axis of the ellipse of the circle's area
+// squashed radially by `squash` (1: the circle's diameter).
+inline double rimExpectedWidthPx(double radius, double squash)
+{
+    return 2.0 * radius / std::sqrt(squash > 0.0 ? squash : 1.0);
+}
+
+// How far (px) the circle of `radius` at `distancePx` from the mirror centre reaches past
+// outerRadius - marginPx (negative: it ends inside).
+inline double rimOverhangPx(double distancePx, double radius, double outerRadius, double marginPx)
+{
+    return distancePx + radius - (outerRadius - marginPx);
+}
+
+}  // namespace omnitune
