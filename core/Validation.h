@@ -171,7 +171,7 @@ struct ValidationOptions {
     // blobs of a far ball's size; a ball lying on a line has its two arms opposite. Off (the
     // thesis): no such test.
     bool lineArms = true;
-    double lineArmsReach = 2.0;         // expected radii; an arm runs from the circle out to here
+    double lineArmsReach = 2.25;        // expected radii; an arm runs from the circle out to here
     double lineArmsLateralPx = 0.5;     // px; beside the ray a line pixel still counts (bent lines); 1 took a
                                         // line beside a 5 px ball for two arms
     double lineArmsMaxAngleDeg = 150.0; // degrees; two arms farther apart are one line through
@@ -182,7 +182,7 @@ struct ValidationOptions {
     // lineBlobDisc expected radii) is line colour (core/LineShare.h): a line's end or a narrow V
     // whose arms merged. Balls of the optics matrix at 5-8 px showed at most 48 %, the false
     // positives there 47-80 %. 100 turns it off; a white ball touching a far line is lost to it.
-    double lineBlobMinPct = 50.0;
+    double lineBlobMinPct = 57.0;
     double lineBlobDisc = 0.8;  // expected radii; inside the blurred border
 };
 
