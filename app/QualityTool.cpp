@@ -1,6 +1,7 @@
 #include "app/QualityTool.h"
 
 #include "app/StderrProgress.h"
+#include "calib/eval/FalsePositiveList.h"
 #include "calib/eval/OutputFile.h"
 #include "calib/eval/QualityFloors.h"
 #include "calib/eval/QualityReport.h"
@@ -26,6 +27,8 @@ std::vector<OptionSpec> qualityToolOptions()
         {"misses", false, false, "      with --quality-matrix: why balls were missed and what false positives hit, per condition"},
         {"cells", true, false, "A,B   with --quality-matrix: only the cells whose name holds every one of these parts (e.g. dim,rods)"},
         {"auto-colours", true, false, "N     with --quality-matrix: each cell's colours by Auto colours from N frames of its field and light (default 0: the default colours)"},
+        {"false-positives", false, false, "      with --quality-matrix: list every false-positive frame with its scores"},
+        {"fp-crops", true, false, "DIR   with --false-positives: also write each one's surroundings, enlarged, as PNGs to DIR"},
         {"deviations", true, false, "FILE  with --quality-matrix: also run each deviation from the thesis switched off (specific, combined)"},
     };
 }
@@ -133,6 +136,11 @@ int runQualityTool(const CommandLine& cl)
               qualityMissesMarkdown(run, shipped.back()) + "\n";
         md += "### Why balls were missed (specific)\n\n" + qualityMissesMarkdown(run, shipped.front()) + "\n";
         md += "### What the false positives hit\n\n" + qualityFalsePositivesMarkdown(run, shipped) + "\n";
+    }
+    if (cl.has("false-positives")) {
+        md += "### Each false positive\n\n" + falsePositiveListMarkdown(run, shipped) + "\n";
+        if (auto dir = cl.value("fp-crops"))
+            if (auto e = writeFalsePositiveCrops(run, shipped, *dir)) return fail(*e);
     }
     if (run.variants.size() > shipped.size())
         md += "### Each deviation from the thesis switched off (the thesis' value)\n\n" + qualityDeviationsMarkdown(run) + "\n";

@@ -577,6 +577,37 @@ std::vector<ConfigKey> buildSchema()
                         "nor line, going on past line_contact_reach, are left out like rays into a robot: a ball at a person's "
                         "feet or a robot's grey side; off: such a ray finds no border and is a miss",
                         [](auto& c) -> auto& { return c.validation.foreignRaysUnknown; }));
+    s.push_back(boolKey("validation.line_arms", false,
+                        "A candidate that passes every test is rejected (runs on) when field lines leave it like spokes: two "
+                        "line arms at less than line_arms_max_angle_deg, or three or more (a corner or a V of the far lines at "
+                        "the horizon, round and of a far ball's size); a ball lying on a line has its two arms opposite; off: "
+                        "no such test (thesis)",
+                        [](auto& c) -> auto& { return c.validation.lineArms; }));
+    s.push_back(doubleKey("validation.line_arms_reach", "radii", 1, 10, false,
+                          "line_arms: an arm is line class on every step from the circle out to this many expected radii; "
+                          "shorter also takes a ball touching a wide line, longer misses bent or broken lines",
+                          [](auto& c) -> auto& { return c.validation.lineArmsReach; }));
+    s.push_back(doubleKey("validation.line_arms_lateral_px", "px", 0, 5, false,
+                          "line_arms: a line pixel this far beside the ray still counts (lines bend, the centre is a pixel off); "
+                          "larger takes a line passing beside the ball for an arm",
+                          [](auto& c) -> auto& { return c.validation.lineArmsLateralPx; }));
+    s.push_back(doubleKey("validation.line_arms_max_angle_deg", "degrees", 0, 180, false,
+                          "line_arms: two arms less than this apart make a junction; farther apart they are one line through the "
+                          "candidate (a ball lying on it); 0 lets every two-armed candidate pass",
+                          [](auto& c) -> auto& { return c.validation.lineArmsMaxAngleDeg; }));
+    s.push_back(doubleKey("validation.line_arms_max_radius_px", "px", 0, 100, false,
+                          "line_arms: candidates whose expected radius is larger are not judged (a line junction looks round only "
+                          "at a far ball's size; a near ball's border meets lines at many angles)",
+                          [](auto& c) -> auto& { return c.validation.lineArmsMaxRadiusPx; }));
+    s.push_back(doubleKey("validation.line_blob_min_pct", "%", 0, 100, false,
+                          "line_arms: a candidate with a single line arm is rejected too when this share of its inside "
+                          "(line_blob_disc) is line colour: a line's end, or a narrow V whose arms merged; lower also loses "
+                          "white balls touching a far line, 100 turns it off",
+                          [](auto& c) -> auto& { return c.validation.lineBlobMinPct; }));
+    s.push_back(doubleKey("validation.line_blob_disc", "radii", 0, 2, false,
+                          "line_blob_min_pct: the disc (expected radii around the centre) whose line share is measured, inside "
+                          "the ball's blurred border",
+                          [](auto& c) -> auto& { return c.validation.lineBlobDisc; }));
 
     // algorithm
     ConfigKey alg{"algorithm.method", ValueType::Choice, "", 0, 0,

@@ -6,7 +6,9 @@
 #include "core/ForeignContact.h"
 #include "core/Geometry.h"
 #include "core/GreenPanelTest.h"
+#include "core/LineArms.h"
 #include "core/LineContact.h"
+#include "core/LineShare.h"
 #include "core/RimTest.h"
 
 #include <algorithm>
@@ -482,6 +484,15 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
         minRadiusPx = std::min(minRadiusPx, options.rimMinRadiusPx);
     }
     c.rejected = firstFailedTest(c, options, roles.idOf(options.ballHint) != ColorClass::Unknown, minRadiusPx);
+    if (c.rejected == RejectReason::None && options.lineArms && c.expectedRadiusPx <= options.lineArmsMaxRadiusPx) {
+        // From the ball's border as the fit found it: a larger ball's tangent line is no arm.
+        const double radius = std::max(c.expectedRadiusPx, c.scores.fitRadiusPx);
+        const LineArms arms = lineArmsAround(classes, geometry, roles, c.x, c.y, radius, options.lineArmsReach,
+                                             options.lineArmsLateralPx);
+        const bool lineEnd = arms.count >= 1 && options.lineBlobMinPct < 100.0 && lineSharePct(classes, geometry, roles, c.x, c.y,
+                                                               options.lineBlobDisc * c.expectedRadiusPx) >= options.lineBlobMinPct;
+        if (arms.junction(options.lineArmsMaxAngleDeg) || lineEnd) c.rejected = RejectReason::RunsOn;
+    }
 }
 
 }  // namespace omnitune

@@ -192,6 +192,25 @@ struct ValidationOptions {
     // px; a candidate that passes the rim test is validated from this expected radius on (instead
     // of minRadiusPx): the closed inward side is what a line corner of that size lacks.
     double rimMinRadiusPx = 3.5;
+    // A candidate that passed every test is rejected (RunsOn) when field lines leave it like
+    // spokes (core/LineArms.h): two arms at less than lineArmsMaxAngleDeg, or three or more. The
+    // optics matrix's false positives were junctions of the far lines near the horizon, round
+    // blobs of a far ball's size; a ball lying on a line has its two arms opposite. Off (the
+    // thesis): no such test.
+    bool lineArms = true;
+    double lineArmsReach = 2.25;        // expected radii; an arm runs from the circle out to here
+    double lineArmsLateralPx = 0.5;     // px; beside the ray a line pixel still counts (bent lines); 1 took a
+                                        // line beside a 5 px ball for two arms
+    double lineArmsMaxAngleDeg = 150.0; // degrees; two arms farther apart are one line through
+    // px; larger candidates are not judged: a junction looks round only at a far ball's size,
+    // and a near ball's border meets lines at many angles (balls at 10-18 px were lost).
+    double lineArmsMaxRadiusPx = 8.0;
+    // %; a candidate with one line arm is rejected too when this share of its inside (within
+    // lineBlobDisc expected radii) is line colour (core/LineShare.h): a line's end or a narrow V
+    // whose arms merged. Balls of the optics matrix at 5-8 px showed at most 48 %, the false
+    // positives there 47-80 %. 100 turns it off; a white ball touching a far line is lost to it.
+    double lineBlobMinPct = 57.0;
+    double lineBlobDisc = 0.8;  // expected radii; inside the blurred border
 };
 
 // Scores one candidate and sets its `rejected` field (first failing test: too small, then the

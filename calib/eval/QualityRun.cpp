@@ -168,7 +168,9 @@ private:
             if (outcome.processed) tally.timesMs.push_back(outcome.timeMs);
             if (verdict == TruthVerdict::FalsePositive) {
                 ++tally.falsePositives;
-                ++tally.falsePositiveKinds[falsePositiveKindIndex(diagnoseFalsePositive(result_, config))];
+                const FalsePositiveKind kind = diagnoseFalsePositive(result_, config);
+                ++tally.falsePositiveKinds[falsePositiveKindIndex(kind)];
+                tally.falsePositiveFrames.push_back(falsePositiveFrame(int(f), truth, kind, rendered.frames[f]));
             }
             if (!truth.ballVisible) continue;
             ++tally.withBall;
@@ -184,6 +186,28 @@ private:
                 tally.rangeErrorsM.push_back(std::hypot(outcome.detection.xM, outcome.detection.yM) - trueRange);
         }
         return tally;
+    }
+
+    // A false positive's record; rare, so its crop may allocate.
+    FalsePositiveFrame falsePositiveFrame(int frame, const TruthRow& truth, FalsePositiveKind kind, const cv::Mat& image) const
+    {
+        FalsePositiveFrame fp;
+        fp.frame = frame;
+        fp.ballVisible = truth.ballVisible;
+        fp.truthPx = truth.px;
+        fp.truthPy = truth.py;
+        fp.truthRadiusPx = truth.radiusPx;
+        fp.kind = kind;
+        const BallDetection& d = result_.detection;
+        if (d.candidate >= 0 && d.candidate < int(result_.candidates.size())) fp.chosen = result_.candidates[std::size_t(d.candidate)];
+        const int half = int(std::ceil(FalsePositiveFrame::cropRadii * std::max(2.0, d.radiusPx)));
+        const cv::Rect box = cv::Rect(int(d.px) - half, int(d.py) - half, 2 * half + 1, 2 * half + 1) &
+                             cv::Rect(0, 0, image.cols, image.rows);
+        if (box.area() > 0) {
+            fp.crop = image(box).clone();
+            fp.cropOrigin = box.tl();
+        }
+        return fp;
     }
 
     const std::vector<QualityVariant>& variants_;

@@ -32,6 +32,19 @@ std::vector<QualityVariant> algorithmVariants();
 std::vector<QualityVariant> deviationVariants(const std::vector<ConfigOverride>& deviations,
                                               const std::vector<Algorithm>& algorithms);
 
+// One false-positive frame as the listing shows it (omnitune-eval --false-positives): what was
+// detected, with its scores, the frame's truth, and the pixels around it.
+struct FalsePositiveFrame {
+    int frame = 0;                  // index in its cell
+    bool ballVisible = false;       // a ball frame whose detection sat too far from the ball
+    double truthPx = 0.0, truthPy = 0.0, truthRadiusPx = 0.0;  // when ballVisible
+    BallCandidate chosen;           // the detected candidate
+    FalsePositiveKind kind;
+    cv::Mat crop;                   // BGR around the detection (FalsePositiveFrame::cropRadii radii)
+    cv::Point cropOrigin;           // the crop's top-left pixel in the frame
+    static constexpr double cropRadii = 4.0;
+};
+
 // What one variant did on a set of frames.
 struct QualityTally {
     int frames = 0;          // judged frames (ball or not)
@@ -48,6 +61,8 @@ struct QualityTally {
     std::array<int, kMissCauseCount> missCauses{};
     int missesRadiusOff = 0;
     std::array<int, kFalsePositiveKindCount> falsePositiveKinds{};
+    // Each false positive of a cell's tally; add() leaves them out (totals count, cells list).
+    std::vector<FalsePositiveFrame> falsePositiveFrames;
 
     void add(const QualityTally& other);
     double detectionPct() const;      // correct / withBall; 0 without ball frames
