@@ -23,6 +23,7 @@ std::string_view rejectReasonName(RejectReason r)
     case RejectReason::NonBlack: return "non-black";
     case RejectReason::Circularity: return "circularity";
     case RejectReason::RunsOn: return "runs on";
+    case RejectReason::LineJunction: return "line junction";
     case RejectReason::NotChosen: return "valid, not chosen";
     }
     return "?";

@@ -21,6 +21,7 @@ enum class RejectReason {
     NonBlack,         // too much black in the ball square (a robot)
     Circularity,      // too few edges at the expected radius
     RunsOn,           // the centre's colour runs on beyond the circle on too many rays: a line corner or end
+    LineJunction,     // field lines leave it like spokes, or it is mostly line with one arm (validation.line_arms)
     NotChosen,        // valid, but another valid candidate scored higher
 };
 

@@ -578,7 +578,7 @@ std::vector<ConfigKey> buildSchema()
                         "feet or a robot's grey side; off: such a ray finds no border and is a miss",
                         [](auto& c) -> auto& { return c.validation.foreignRaysUnknown; }));
     s.push_back(boolKey("validation.line_arms", false,
-                        "A candidate that passes every test is rejected (runs on) when field lines leave it like spokes: two "
+                        "A candidate that passes every test is rejected (line junction) when field lines leave it like spokes: two "
                         "line arms at less than line_arms_max_angle_deg, or three or more (a corner or a V of the far lines at "
                         "the horizon, round and of a far ball's size); a ball lying on a line has its two arms opposite; off: "
                         "no such test (thesis)",

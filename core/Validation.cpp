@@ -491,7 +491,7 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
                                              options.lineArmsLateralPx);
         const bool lineEnd = arms.count >= 1 && options.lineBlobMinPct < 100.0 && lineSharePct(classes, geometry, roles, c.x, c.y,
                                                                options.lineBlobDisc * c.expectedRadiusPx) >= options.lineBlobMinPct;
-        if (arms.junction(options.lineArmsMaxAngleDeg) || lineEnd) c.rejected = RejectReason::RunsOn;
+        if (arms.junction(options.lineArmsMaxAngleDeg) || lineEnd) c.rejected = RejectReason::LineJunction;
     }
 }
 

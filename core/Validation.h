@@ -192,7 +192,7 @@ struct ValidationOptions {
     // px; a candidate that passes the rim test is validated from this expected radius on (instead
     // of minRadiusPx): the closed inward side is what a line corner of that size lacks.
     double rimMinRadiusPx = 3.5;
-    // A candidate that passed every test is rejected (RunsOn) when field lines leave it like
+    // A candidate that passed every test is rejected (LineJunction) when field lines leave it like
     // spokes (core/LineArms.h): two arms at less than lineArmsMaxAngleDeg, or three or more. The
     // optics matrix's false positives were junctions of the far lines near the horizon, round
     // blobs of a far ball's size; a ball lying on a line has its two arms opposite. Off (the

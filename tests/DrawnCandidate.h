@@ -13,14 +13,20 @@
 
 namespace omnitune::test {
 
+// The verdict and every score, for a failure message.
 inline QString verdict(const BallCandidate& c)
 {
-    return QString("rejected by %1 (scores %2 / %3 / circularity %4, run-on %5)")
+    return QString("rejected by %1 (scores %2 / %3 / circularity %4, run-on %5, fit r %6 of %7 expected at %8 px, fit "
+                   "centre off by (%9))")
         .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
         .arg(c.scores.nonGreenPct)
         .arg(c.scores.nonBlackPct)
         .arg(c.scores.circularityPct)
-        .arg(c.scores.runOnPct);
+        .arg(c.scores.runOnPct)
+        .arg(c.scores.fitRadiusPx)
+        .arg(c.expectedRadiusPx)
+        .arg(c.distancePx)
+        .arg(QString("%1, %2").arg(c.scores.fitDx).arg(c.scores.fitDy));
 }
 
 // The candidate at the centre of what `draw(frame, centre, expectedRadius)` drew `distance` px

@@ -1,7 +1,7 @@
 // validation.rim_test (core/RimTest.h): a far ball cut by the mirror rim is judged instead of
 // refused, while the rim's look-alikes (a robot's marker on its dark body, a line along the rim)
 // are still refused there.
-#include "DrawnScene.h"
+#include "DrawnCandidate.h"
 #include "core/FrameColour.h"
 #include "core/RimTest.h"
 #include "core/Validation.h"
@@ -60,18 +60,6 @@ BallCandidate validate(const Config& c, const cv::Mat& frame, cv::Point p)
     const FrameColour colour(frame, PixelFormat::Bgr8);
     validateCandidate(cand, s.classes, s.edges, s.geometry, s.ball, c.validation, &colour);
     return cand;
-}
-
-QString verdict(const BallCandidate& c)
-{
-    return QString("rejected by %1 (scores %2 / %3 / %4, run-on %5, expected r %6 at %7 px)")
-        .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
-        .arg(c.scores.nonGreenPct)
-        .arg(c.scores.nonBlackPct)
-        .arg(c.scores.circularityPct)
-        .arg(c.scores.runOnPct)
-        .arg(c.expectedRadiusPx)
-        .arg(c.distancePx);
 }
 
 }  // namespace

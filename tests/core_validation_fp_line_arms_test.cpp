@@ -2,7 +2,7 @@
 // of far lines, or a line's end, is a round blob of line colour of a far ball's size and passes
 // the shape tests; the lines leaving it like spokes give it away. A ball beside a line, on a
 // line, at a line's end, or a white ball alone, still passes.
-#include "DrawnScene.h"
+#include "DrawnCandidate.h"
 #include "core/FrameColour.h"
 #include "core/LineArms.h"
 #include "core/LineShare.h"
@@ -18,17 +18,6 @@ using namespace omnitune::test;
 namespace {
 
 enum class Scene { VJunction, LineEnd, BallBesideLine, BallOnLine, BallAtLineEnd, WhiteBall };
-
-QString verdict(const BallCandidate& c)
-{
-    return QString("rejected by %1 (non-green %2, non-black %3, circularity %4, run-on %5, r %6)")
-        .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
-        .arg(c.scores.nonGreenPct)
-        .arg(c.scores.nonBlackPct)
-        .arg(c.scores.circularityPct)
-        .arg(c.scores.runOnPct)
-        .arg(c.expectedRadiusPx);
-}
 
 // The distance (px from the robot centre) where the ball model expects `radius` px.
 double distanceForRadius(const Config& c, double radius)
@@ -139,7 +128,7 @@ private slots:
         if (ball)
             QVERIFY2(on.rejected == RejectReason::None, qPrintable(verdict(on)));
         else
-            QVERIFY2(on.rejected == RejectReason::RunsOn, qPrintable(verdict(on)));
+            QVERIFY2(on.rejected == RejectReason::LineJunction, qPrintable(verdict(on)));
         c.validation.lineArms = false;
         const BallCandidate off = validate(c, frame, p);
         QVERIFY2(off.rejected == RejectReason::None, qPrintable("off: " + verdict(off)));

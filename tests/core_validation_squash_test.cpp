@@ -1,7 +1,7 @@
 // validation.radial_squash: a ball squashed radially by the mirror (an ellipse of ball.squash_c0..c2)
 // passes circularity when the test looks for that ellipse, and the look-alikes the circle test
 // exists for (a line corner, a robot's straight edge and corner, discs of other sizes) still fail.
-#include "DrawnScene.h"
+#include "DrawnCandidate.h"
 #include "core/FrameColour.h"
 #include "core/Validation.h"
 
@@ -22,20 +22,6 @@ Config squashedConfig(bool radialSquash)
     c.ball.squashC0 = kSquash;
     c.validation.radialSquash = radialSquash;
     return c;
-}
-
-QString verdict(const BallCandidate& c)
-{
-    return QString("rejected by %1 (scores %2 / %3 / %4, run-on %5, fit r %6 of %7 at %8, %9)")
-        .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
-        .arg(c.scores.nonGreenPct)
-        .arg(c.scores.nonBlackPct)
-        .arg(c.scores.circularityPct)
-        .arg(c.scores.runOnPct)
-        .arg(c.scores.fitRadiusPx)
-        .arg(c.expectedRadiusPx)
-        .arg(c.scores.fitDx)
-        .arg(c.scores.fitDy);
 }
 
 BallCandidate validate(const Config& c, const cv::Mat& frame, cv::Point p)

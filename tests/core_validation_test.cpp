@@ -1,6 +1,6 @@
 // Candidate validation (thesis 4.4): non-green, non-black and circularity tests, each shown
 // rejecting the look-alike it exists for.
-#include "DrawnScene.h"
+#include "DrawnCandidate.h"
 #include "core/ConfigSchema.h"
 #include "core/FrameColour.h"
 #include "core/Validation.h"
@@ -16,20 +16,6 @@ Q_DECLARE_METATYPE(omnitune::RejectReason)
 namespace {
 
 // "rejected by runs on (scores 100 / 100 / 92, run-on 40)": for failure messages.
-QString verdict(const BallCandidate& c)
-{
-    return QString("rejected by %1 (scores %2 / %3 / %4, run-on %5, fit r %6 of %7 at %8, %9)")
-        .arg(QString::fromStdString(std::string(rejectReasonName(c.rejected))))
-        .arg(c.scores.nonGreenPct)
-        .arg(c.scores.nonBlackPct)
-        .arg(c.scores.circularityPct)
-        .arg(c.scores.runOnPct)
-        .arg(c.scores.fitRadiusPx)
-        .arg(c.expectedRadiusPx)
-        .arg(c.scores.fitDx)
-        .arg(c.scores.fitDy);
-}
-
 // An unvalidated candidate centred on `p`, with the distance and expected radius there.
 BallCandidate candidateAt(const EdgeStages& s, cv::Point p)
 {
