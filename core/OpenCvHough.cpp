@@ -6,6 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace omnitune {
@@ -40,14 +41,46 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
                           const BallModel& ball, std::vector<BallCandidate>& candidates)
 {
     CV_Assert(binary.type() == CV_8UC1 && binary.size() == geometry.imageSize());
-    circles_.clear();
-    cv::HoughCircles(binary, circles_, cv::HOUGH_GRADIENT, options.dp, options.minDist, options.cannyHigh,
-                     options.accThreshold, options.minRadius, options.maxRadius);
+    openCvRadiusBands(geometry, ball, options, bands_);
+    if (bands_.empty()) {
+        circles_.clear();
+        cv::HoughCircles(binary, circles_, cv::HOUGH_GRADIENT, options.dp, options.minDist, options.cannyHigh,
+                         options.accThreshold, options.minRadius, options.maxRadius);
+        Pass all;
+        all.maxCounted = options.maxCircles;
+        appendCircles(binary, options, geometry, ball, all, candidates);
+        return;
+    }
+    for (const OpenCvRadiusBand& b : bands_) {
+        if (b.roi.empty()) continue;
+        circles_.clear();
+        cv::HoughCircles(binary(b.roi), circles_, cv::HOUGH_GRADIENT, options.dp, b.minDist, options.cannyHigh,
+                         b.accThreshold, b.minRadius, b.maxRadius);
+        Pass pass;
+        pass.offset = b.roi.tl();
+        pass.minDistancePx = b.minDistancePx;
+        pass.maxDistancePx = b.maxDistancePx;
+        pass.maxCounted = options.bandCircles;
+        appendCircles(binary, options, geometry, ball, pass, candidates);
+    }
+}
+
+void OpenCvHough::appendCircles(const cv::Mat& binary, const OpenCvHoughOptions& options, const Geometry& geometry,
+                               const BallModel& ball, const Pass& pass, std::vector<BallCandidate>& candidates)
+{
+    const GeometryOptions& g = geometry.options();
     // OpenCV returns the circles strongest first.
-    int counted = 0;  // circles that use up maxCircles
+    int counted = 0;  // circles that use up maxCounted
     int implausible = 0;
-    for (const cv::Vec3f& c : circles_) {
-        if (counted >= options.maxCircles) break;
+    for (cv::Vec3f c : circles_) {
+        if (counted >= pass.maxCounted) break;
+        c[0] += float(pass.offset.x);
+        c[1] += float(pass.offset.y);
+        if (pass.maxDistancePx > 0) {
+            // Another ring's circle: that ring's own search judges it.
+            const double d = std::hypot(c[0] - g.centerX, c[1] - g.centerY);
+            if (d < pass.minDistancePx || d >= pass.maxDistancePx) continue;
+        }
         BallCandidate cand;
         cand.source = CandidateSource::OpenCvHough;
         cand.x = int(std::lround(c[0]));

@@ -9,6 +9,7 @@
 // using up the count); maxCircles 1, skipImplausible false and minRadiusRatio 0 give the
 // thesis' rule.
 #include "core/BallCandidate.h"
+#include "core/OpenCvRadiusBands.h"
 
 #include <opencv2/core.hpp>
 
@@ -58,17 +59,40 @@ struct OpenCvHoughOptions {
     // 2000: 207 / 8, and the combined pipeline's CPU time on the bench's hard frames 1.51 -> 1.10x
     // cv::HoughCircles (specific alone 1.00). The OpenCV algorithm alone always runs it.
     int maxEdgePixels = 2000;
+    // Per-ring search (core/OpenCvRadiusBands): the processed area is cut into distance rings in
+    // which the expected radius varies by at most this ratio, and cv::HoughCircles runs in each
+    // with the ring's radius range (x min/max_radius_ratio). 0: one search over
+    // minRadius..maxRadius (thesis). Optics matrix, 2 frames/cell: OpenCV 33.0 -> 42.2 % with
+    // 5 -> 4 false-positive frames (span 1.5: 36.8 %; 1.25 with 3 circles per ring 44.4 % but 7).
+    double bandRadiusSpan = 1.25;
+    // Per ring: votes a centre needs per px of the ring's smallest expected circumference (never
+    // below accThreshold; 0: accThreshold everywhere: at span 1.5, 0.5 found 29.1 % of the
+    // balls against 36.8 % with 0), min_dist as a multiple of that radius, and the plausible circles
+    // validated (instead of maxCircles: a frame validates at most rings x bandCircles).
+    double bandVotesPerPx = 0.0;
+    double bandMinDistRatio = 1.0;
+    int bandCircles = 2;
 };
 
 class OpenCvHough {
 public:
-    // Appends up to maxCircles candidates of plausible radius, and up to as many implausible
-    // ones before them marked RadiusTooLarge (too large or too small) or OutsideArea.
+    // Appends up to maxCircles candidates of plausible radius (per ring: bandCircles), and up to
+    // maxCircles implausible ones before them marked RadiusTooLarge (too large or too small) or
+    // OutsideArea.
     void process(const cv::Mat& binary, const OpenCvHoughOptions& options, const Geometry& geometry,
                  const BallModel& ball, std::vector<BallCandidate>& candidates);
 
 private:
+    struct Pass {  // one cv::HoughCircles run's circles, appended
+        cv::Point offset;                           // of its image part
+        double minDistancePx = 0, maxDistancePx = 0;  // centres kept; max 0: all
+        int maxCounted = 0;
+    };
+    void appendCircles(const cv::Mat& binary, const OpenCvHoughOptions& options, const Geometry& geometry,
+                      const BallModel& ball, const Pass& pass, std::vector<BallCandidate>& candidates);
+
     std::vector<cv::Vec3f> circles_;
+    std::vector<OpenCvRadiusBand> bands_;
 };
 
 }  // namespace omnitune
