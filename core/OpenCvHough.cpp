@@ -51,10 +51,12 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
         appendCircles(binary, options, geometry, ball, all, candidates);
         return;
     }
-    for (const OpenCvRadiusBand& b : bands_) {
+    if (rings_.size() != bands_.size()) rings_.resize(bands_.size());
+    for (std::size_t i = 0; i < bands_.size(); ++i) {
+        const OpenCvRadiusBand& b = bands_[i];
         if (b.roi.empty()) continue;
         circles_.clear();
-        cv::HoughCircles(binary(b.roi), circles_, cv::HOUGH_GRADIENT, options.dp, b.minDist, options.cannyHigh,
+        cv::HoughCircles(ringInput(binary, geometry, i), circles_, cv::HOUGH_GRADIENT, options.bandDp, b.minDist, options.cannyHigh,
                          b.accThreshold, b.minRadius, b.maxRadius);
         Pass pass;
         pass.offset = b.roi.tl();
@@ -63,6 +65,30 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
         pass.maxCounted = options.bandCircles;
         appendCircles(binary, options, geometry, ball, pass, candidates);
     }
+}
+
+const cv::Mat& OpenCvHough::ringInput(const cv::Mat& binary, const Geometry& geometry, std::size_t i)
+{
+    const OpenCvRadiusBand& b = bands_[i];
+    RingImage& ring = rings_[i];
+    const GeometryOptions& g = geometry.options();
+    const bool same = ring.band.roi == b.roi && ring.band.minDistancePx == b.minDistancePx &&
+                      ring.band.maxDistancePx == b.maxDistancePx && ring.band.maxRadius == b.maxRadius &&
+                      ring.centreX == g.centerX && ring.centreY == g.centerY && !ring.outside.empty();
+    if (!same) {
+        ring.band = b;
+        ring.centreX = g.centerX;
+        ring.centreY = g.centerY;
+        const double reach = b.maxRadius + 2.0;
+        const cv::Point c(int(std::lround(g.centerX)) - b.roi.x, int(std::lround(g.centerY)) - b.roi.y);
+        ring.outside.create(b.roi.size(), CV_8UC1);
+        ring.outside.setTo(255);
+        cv::circle(ring.outside, c, int(std::ceil(b.maxDistancePx + reach)), 0, cv::FILLED);
+        const int innerReach = int(std::floor(b.minDistancePx - reach));
+        if (innerReach > 0) cv::circle(ring.outside, c, innerReach, 255, cv::FILLED);
+    }
+    cv::bitwise_or(binary(b.roi), ring.outside, ring.input);
+    return ring.input;
 }
 
 void OpenCvHough::appendCircles(const cv::Mat& binary, const OpenCvHoughOptions& options, const Geometry& geometry,

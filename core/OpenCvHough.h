@@ -66,12 +66,18 @@ struct OpenCvHoughOptions {
     // 5 -> 4 false-positive frames (span 1.5: 36.8 %; 1.25 with 3 circles per ring 44.4 % but 7).
     double bandRadiusSpan = 1.25;
     // Per ring: votes a centre needs per px of the ring's smallest expected circumference (never
-    // below accThreshold; 0: accThreshold everywhere: at span 1.5, 0.5 found 29.1 % of the
+    // below bandAccThreshold; 0: accThreshold everywhere: at span 1.5, 0.5 found 29.1 % of the
     // balls against 36.8 % with 0), min_dist as a multiple of that radius, and the plausible circles
     // validated (instead of maxCircles: a frame validates at most rings x bandCircles).
     double bandVotesPerPx = 0.0;
     double bandMinDistRatio = 1.0;
     int bandCircles = 2;
+    // Per ring, instead of dp and accThreshold: the image's own accumulator resolution and 8
+    // votes. Optics matrix, 2 frames/cell: 42.2 -> 45.3 % of the balls, false-positive frames
+    // 4 -> 2 of 512 (on the distractor-free cells: dp 2 with 8 or 6 votes found no more than
+    // with 12; dp 1 with 6 or 5 votes 3-4 fewer balls and more false positives).
+    double bandDp = 1.0;
+    double bandAccThreshold = 8.0;
 };
 
 class OpenCvHough {
@@ -91,8 +97,20 @@ private:
     void appendCircles(const cv::Mat& binary, const OpenCvHoughOptions& options, const Geometry& geometry,
                       const BallModel& ball, const Pass& pass, std::vector<BallCandidate>& candidates);
 
+    // A ring's input: the binary image with everything farther than its largest circle from the
+    // ring made green, so a noisy frame's far edges cost no radius estimation there (the border
+    // this paints is out of every ring centre's reach). `outside` is kept while the ring stays.
+    struct RingImage {
+        OpenCvRadiusBand band;
+        double centreX = 0, centreY = 0;
+        cv::Mat outside;  // 255 out of the ring's reach, ROI-sized
+        cv::Mat input;
+    };
+    const cv::Mat& ringInput(const cv::Mat& binary, const Geometry& geometry, std::size_t i);
+
     std::vector<cv::Vec3f> circles_;
     std::vector<OpenCvRadiusBand> bands_;
+    std::vector<RingImage> rings_;
 };
 
 }  // namespace omnitune

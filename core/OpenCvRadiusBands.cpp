@@ -38,7 +38,7 @@ OpenCvRadiusBand makeBand(const Geometry& geometry, const OpenCvHoughOptions& o,
     b.maxDistancePx = d1;
     b.minRadius = std::max(o.minRadius, int(std::floor(r.lo * o.minRadiusRatio)));
     b.maxRadius = std::max(b.minRadius + 1, std::min(o.maxRadius, int(std::ceil(r.hi * o.maxRadiusRatio))));
-    b.accThreshold = std::max(o.accThreshold, o.bandVotesPerPx * 2.0 * kPi * r.lo);
+    b.accThreshold = std::max(o.bandAccThreshold, o.bandVotesPerPx * 2.0 * kPi * r.lo);
     b.minDist = std::max(1.0, o.bandMinDistRatio * r.lo);
     // Edges up to the largest circle beyond the ring vote for its centres.
     const GeometryOptions& g = geometry.options();
