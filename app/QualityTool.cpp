@@ -135,6 +135,10 @@ int runQualityTool(const CommandLine& cl)
         md += "### Why balls were missed (combined; cause of each missed frame)\n\n" +
               qualityMissesMarkdown(run, shipped.back()) + "\n";
         md += "### Why balls were missed (specific)\n\n" + qualityMissesMarkdown(run, shipped.front()) + "\n";
+        // The OpenCV algorithm alone (issue 9 section 4: its own floor), when it ran.
+        for (std::size_t v : shipped)
+            if (run.variants[v].algorithm == Algorithm::OpenCv)
+                md += "### Why balls were missed (OpenCV)\n\n" + qualityMissesMarkdown(run, v) + "\n";
         md += "### What the false positives hit\n\n" + qualityFalsePositivesMarkdown(run, shipped) + "\n";
     }
     if (cl.has("false-positives")) {

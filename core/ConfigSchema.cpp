@@ -375,6 +375,29 @@ std::vector<ConfigKey> buildSchema()
                        "processed ring (its time grows with them: dim speckle, noise); bounds the worst frame's time. 0: never "
                        "skipped (thesis). The OpenCV algorithm alone always runs it",
                        [](auto& c) -> auto& { return c.opencvHough.maxEdgePixels; }));
+    s.push_back(doubleKey("opencv_hough.band_radius_span", "ratio", 0, 10, false,
+                          "Per-ring search: the processed area is cut into distance rings in which the ball's expected radius varies "
+                          "by at most this ratio, and cv::HoughCircles runs in each with the ring's own radius range (x min/max_radius_ratio), "
+                          "accumulator threshold and min_dist, so a small far ball is not outranked by larger clutter circles. 0: one "
+                          "search over min_radius..max_radius (thesis)",
+                          [](auto& c) -> auto& { return c.opencvHough.bandRadiusSpan; }));
+    s.push_back(doubleKey("opencv_hough.band_votes_per_px", "votes/px", 0, 10, false,
+                          "Per-ring search: accumulator votes a centre needs per px of the ring's smallest expected circumference "
+                          "(never below band_acc_threshold; 0: band_acc_threshold in every ring)",
+                          [](auto& c) -> auto& { return c.opencvHough.bandVotesPerPx; }));
+    s.push_back(doubleKey("opencv_hough.band_min_dist_ratio", "ratio", 0, 10, false,
+                          "Per-ring search: minimum distance between circle centres as a multiple of the ring's smallest expected "
+                          "radius (replaces min_dist)",
+                          [](auto& c) -> auto& { return c.opencvHough.bandMinDistRatio; }));
+    s.push_back(intKey("opencv_hough.band_circles", "circles", 1, 50, false,
+                       "Per-ring search: circles of plausible radius validated per ring, strongest first (replaces max_circles)",
+                       [](auto& c) -> auto& { return c.opencvHough.bandCircles; }));
+    s.push_back(doubleKey("opencv_hough.band_dp", "ratio", 1, 4, false,
+                          "Per-ring search: inverse accumulator resolution (replaces dp; 1: the image's, which a 4 px far ball needs)",
+                          [](auto& c) -> auto& { return c.opencvHough.bandDp; }));
+    s.push_back(doubleKey("opencv_hough.band_acc_threshold", "votes", 1, 1000, false,
+                          "Per-ring search: accumulator votes a circle centre needs at least (replaces acc_threshold)",
+                          [](auto& c) -> auto& { return c.opencvHough.bandAccThreshold; }));
 
     // validation
     s.push_back(doubleKey("validation.min_non_green_pct", "%", 0, 100, true, "Non-green share the ball square needs; lower lets carpet patches through",

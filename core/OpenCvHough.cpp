@@ -6,6 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace omnitune {
@@ -40,14 +41,72 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
                           const BallModel& ball, std::vector<BallCandidate>& candidates)
 {
     CV_Assert(binary.type() == CV_8UC1 && binary.size() == geometry.imageSize());
-    circles_.clear();
-    cv::HoughCircles(binary, circles_, cv::HOUGH_GRADIENT, options.dp, options.minDist, options.cannyHigh,
-                     options.accThreshold, options.minRadius, options.maxRadius);
+    openCvRadiusBands(geometry, ball, options, bands_);
+    if (bands_.empty()) {
+        circles_.clear();
+        cv::HoughCircles(binary, circles_, cv::HOUGH_GRADIENT, options.dp, options.minDist, options.cannyHigh,
+                         options.accThreshold, options.minRadius, options.maxRadius);
+        Pass all;
+        all.maxCounted = options.maxCircles;
+        appendCircles(binary, options, geometry, ball, all, candidates);
+        return;
+    }
+    if (rings_.size() != bands_.size()) rings_.resize(bands_.size());
+    for (std::size_t i = 0; i < bands_.size(); ++i) {
+        const OpenCvRadiusBand& b = bands_[i];
+        if (b.roi.empty()) continue;
+        circles_.clear();
+        cv::HoughCircles(ringInput(binary, geometry, i), circles_, cv::HOUGH_GRADIENT, options.bandDp, b.minDist, options.cannyHigh,
+                         b.accThreshold, b.minRadius, b.maxRadius);
+        Pass pass;
+        pass.offset = b.roi.tl();
+        pass.minDistancePx = b.minDistancePx;
+        pass.maxDistancePx = b.maxDistancePx;
+        pass.maxCounted = options.bandCircles;
+        appendCircles(binary, options, geometry, ball, pass, candidates);
+    }
+}
+
+const cv::Mat& OpenCvHough::ringInput(const cv::Mat& binary, const Geometry& geometry, std::size_t i)
+{
+    const OpenCvRadiusBand& b = bands_[i];
+    RingImage& ring = rings_[i];
+    const GeometryOptions& g = geometry.options();
+    const bool same = ring.band.roi == b.roi && ring.band.minDistancePx == b.minDistancePx &&
+                      ring.band.maxDistancePx == b.maxDistancePx && ring.band.maxRadius == b.maxRadius &&
+                      ring.centreX == g.centerX && ring.centreY == g.centerY && !ring.outside.empty();
+    if (!same) {
+        ring.band = b;
+        ring.centreX = g.centerX;
+        ring.centreY = g.centerY;
+        const double reach = b.maxRadius + 2.0;
+        const cv::Point c(int(std::lround(g.centerX)) - b.roi.x, int(std::lround(g.centerY)) - b.roi.y);
+        ring.outside.create(b.roi.size(), CV_8UC1);
+        ring.outside.setTo(255);
+        cv::circle(ring.outside, c, int(std::ceil(b.maxDistancePx + reach)), 0, cv::FILLED);
+        const int innerReach = int(std::floor(b.minDistancePx - reach));
+        if (innerReach > 0) cv::circle(ring.outside, c, innerReach, 255, cv::FILLED);
+    }
+    cv::bitwise_or(binary(b.roi), ring.outside, ring.input);
+    return ring.input;
+}
+
+void OpenCvHough::appendCircles(const cv::Mat& binary, const OpenCvHoughOptions& options, const Geometry& geometry,
+                               const BallModel& ball, const Pass& pass, std::vector<BallCandidate>& candidates)
+{
+    const GeometryOptions& g = geometry.options();
     // OpenCV returns the circles strongest first.
-    int counted = 0;  // circles that use up maxCircles
+    int counted = 0;  // circles that use up maxCounted
     int implausible = 0;
-    for (const cv::Vec3f& c : circles_) {
-        if (counted >= options.maxCircles) break;
+    for (cv::Vec3f c : circles_) {
+        if (counted >= pass.maxCounted) break;
+        c[0] += float(pass.offset.x);
+        c[1] += float(pass.offset.y);
+        if (pass.maxDistancePx > 0) {
+            // Another ring's circle: that ring's own search judges it.
+            const double d = std::hypot(c[0] - g.centerX, c[1] - g.centerY);
+            if (d < pass.minDistancePx || d >= pass.maxDistancePx) continue;
+        }
         BallCandidate cand;
         cand.source = CandidateSource::OpenCvHough;
         cand.x = int(std::lround(c[0]));

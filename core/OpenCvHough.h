@@ -9,6 +9,7 @@
 // using up the count); maxCircles 1, skipImplausible false and minRadiusRatio 0 give the
 // thesis' rule.
 #include "core/BallCandidate.h"
+#include "core/OpenCvRadiusBands.h"
 
 #include <opencv2/core.hpp>
 
@@ -57,18 +58,62 @@ struct OpenCvHoughOptions {
     // matrix, 446 ball frames; docs/performance.md): no cap 210 balls / 9 false-positive frames,
     // 2000: 207 / 8, and the combined pipeline's CPU time on the bench's hard frames 1.51 -> 1.10x
     // cv::HoughCircles (specific alone 1.00). The OpenCV algorithm alone always runs it.
-    int maxEdgePixels = 2000;
+    // With the per-ring search (below), 2000 -> 4000: combined 283 -> 291 balls, false-positive
+    // frames 8 -> 8 of 512 (3000: 286; 5000: 291; none: 291 with 9, p99 ~1 s on the loaded
+    // machine against ~60-85 ms with 2000-5000).
+    int maxEdgePixels = 4000;
+    // Per-ring search (core/OpenCvRadiusBands): the processed area is cut into distance rings in
+    // which the expected radius varies by at most this ratio, and cv::HoughCircles runs in each
+    // with the ring's radius range (x min/max_radius_ratio). 0: one search over
+    // minRadius..maxRadius (thesis). Optics matrix, 2 frames/cell: OpenCV 33.0 -> 42.2 % with
+    // 5 -> 4 false-positive frames (span 1.5: 36.8 %; 1.25 with 3 circles per ring 44.4 % but 7).
+    double bandRadiusSpan = 1.25;
+    // Per ring: votes a centre needs per px of the ring's smallest expected circumference (never
+    // below bandAccThreshold; 0: accThreshold everywhere: at span 1.5, 0.5 found 29.1 % of the
+    // balls against 36.8 % with 0), min_dist as a multiple of that radius, and the plausible circles
+    // validated (instead of maxCircles: a frame validates at most rings x bandCircles).
+    double bandVotesPerPx = 0.0;
+    double bandMinDistRatio = 1.0;
+    int bandCircles = 2;
+    // Per ring, instead of dp and accThreshold: the image's own accumulator resolution and 8
+    // votes. Optics matrix, 2 frames/cell: 42.2 -> 45.3 % of the balls, false-positive frames
+    // 4 -> 2 of 512 (on the distractor-free cells: dp 2 with 8 or 6 votes found no more than
+    // with 12; dp 1 with 6 or 5 votes 3-4 fewer balls and more false positives).
+    double bandDp = 1.0;
+    double bandAccThreshold = 8.0;
 };
 
 class OpenCvHough {
 public:
-    // Appends up to maxCircles candidates of plausible radius, and up to as many implausible
-    // ones before them marked RadiusTooLarge (too large or too small) or OutsideArea.
+    // Appends up to maxCircles candidates of plausible radius (per ring: bandCircles), and up to
+    // maxCircles implausible ones before them marked RadiusTooLarge (too large or too small) or
+    // OutsideArea.
     void process(const cv::Mat& binary, const OpenCvHoughOptions& options, const Geometry& geometry,
                  const BallModel& ball, std::vector<BallCandidate>& candidates);
 
 private:
+    struct Pass {  // one cv::HoughCircles run's circles, appended
+        cv::Point offset;                           // of its image part
+        double minDistancePx = 0, maxDistancePx = 0;  // centres kept; max 0: all
+        int maxCounted = 0;
+    };
+    void appendCircles(const cv::Mat& binary, const OpenCvHoughOptions& options, const Geometry& geometry,
+                      const BallModel& ball, const Pass& pass, std::vector<BallCandidate>& candidates);
+
+    // A ring's input: the binary image with everything farther than its largest circle from the
+    // ring made green, so a noisy frame's far edges cost no radius estimation there (the border
+    // this paints is out of every ring centre's reach). `outside` is kept while the ring stays.
+    struct RingImage {
+        OpenCvRadiusBand band;
+        double centreX = 0, centreY = 0;
+        cv::Mat outside;  // 255 out of the ring's reach, ROI-sized
+        cv::Mat input;
+    };
+    const cv::Mat& ringInput(const cv::Mat& binary, const Geometry& geometry, std::size_t i);
+
     std::vector<cv::Vec3f> circles_;
+    std::vector<OpenCvRadiusBand> bands_;
+    std::vector<RingImage> rings_;
 };
 
 }  // namespace omnitune

@@ -79,14 +79,18 @@ private slots:
         tour.frames = kFrames;
         tour.seed = 5;
         PipelineResult r;
+        std::size_t candidates = 0;
         for (SceneOptions scene : makeTour(tour)) {
             scene.ballPresent = false;
             pipeline.process(sim.render(scene), PixelFormat::Bgr8, r);
             QVERIFY2(r.ok(), r.error.c_str());
-            QVERIFY(!r.candidates.empty());  // the lines do give candidates: validation rejects them
+            candidates += r.candidates.size();
             QVERIFY2(!r.detection.found,
                      qPrintable(QString("false ball %1 m away at (%2, %3)").arg(r.detection.distanceM).arg(r.detection.px).arg(r.detection.py)));
         }
+        // The lines do give candidates (validation rejects them); OpenCV's per-ring search
+        // (opencv_hough.band_radius_span) proposes none on some frames.
+        QVERIFY(candidates > 0);
     }
 
     // World position: the detection in metres agrees with the simulator's truth.

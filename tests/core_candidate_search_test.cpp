@@ -177,6 +177,7 @@ private slots:
         Config c;
         c.algorithm = Algorithm::OpenCv;
         c.opencvHough.dp = 2;  // the thesis' accumulator, where the large disc is the strongest circle
+        c.opencvHough.bandRadiusSpan = 0;  // one search, where max_circles applies (core_opencv_bands_test: rings)
         cv::Mat frame = greenField(c);
         // A disc far too large for its distance: HoughCircles' strongest circle.
         cv::circle(frame, pointAt(c, 210, 300), int(3 * expectedRadius(c, 210)), kOrange, cv::FILLED);
@@ -235,6 +236,7 @@ private slots:
         OpenCvHough hough;
         std::vector<BallCandidate> cands;
         c.opencvHough.minRadius = 1;
+        c.opencvHough.bandRadiusSpan = 0;  // per ring, HoughCircles does not search below min_radius_ratio at all
         hough.process(s.binary, c.opencvHough, s.geometry, s.ball, cands);
         QVERIFY(!cands.empty());
         for (const auto& k : cands) QCOMPARE(k.rejected, RejectReason::RadiusTooLarge);

@@ -140,9 +140,14 @@ private slots:
         const EdgeStages s(c, frame);
         OpenCvHough hough;
         std::vector<BallCandidate> cands;
+        c.opencvHough.bandRadiusSpan = 0;  // the one search; per ring that radius is never searched
         hough.process(s.binary, c.opencvHough, s.geometry, s.ball, cands);
         QCOMPARE(int(cands.size()), 1);
         QCOMPARE(cands[0].rejected, RejectReason::RadiusTooLarge);
+        c.opencvHough.bandRadiusSpan = 1.25;
+        cands.clear();
+        hough.process(s.binary, c.opencvHough, s.geometry, s.ball, cands);
+        for (const BallCandidate& k : cands) QVERIFY(k.rejected != RejectReason::None);
     }
 
     // Bad bounds are a user error reported once, by checkConfig() with the key; the stage only
