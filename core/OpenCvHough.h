@@ -58,10 +58,11 @@ struct OpenCvHoughOptions {
     // matrix, 446 ball frames; docs/performance.md): no cap 210 balls / 9 false-positive frames,
     // 2000: 207 / 8, and the combined pipeline's CPU time on the bench's hard frames 1.51 -> 1.10x
     // cv::HoughCircles (specific alone 1.00). The OpenCV algorithm alone always runs it.
-    // With the per-ring search (below), 2000 -> 4000: combined 283 -> 291 balls, false-positive
-    // frames 8 -> 8 of 512 (3000: 286; 5000: 291; none: 291 with 9, p99 ~1 s on the loaded
-    // machine against ~60-85 ms with 2000-5000).
-    int maxEdgePixels = 4000;
+    // With the per-ring search (below), 2000 -> 4000 finds combined 283 -> 291 balls (false-
+    // positive frames 8 -> 8 of 512; 3000: 286; 5000: 291), but on the bench's hard frames
+    // (idle machine) combined's p99 goes from 9.1 to 15.0 ms (3000: 10.6), past issue 9's 10 ms:
+    // 2000 keeps the bound. A cap per ring would buy the balls without the time.
+    int maxEdgePixels = 2000;
     // Per-ring search (core/OpenCvRadiusBands): the processed area is cut into distance rings in
     // which the expected radius varies by at most this ratio, and cv::HoughCircles runs in each
     // with the ring's radius range (x min/max_radius_ratio). 0: one search over
