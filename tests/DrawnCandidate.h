@@ -3,6 +3,7 @@
 // of one validation rule at a time: the verdict as readable text, and a ray walked pixel by
 // pixel as traceBorder walks it.
 #include "DrawnScene.h"
+#include "core/FrameColour.h"
 #include "core/Validation.h"
 
 #include <QString>
@@ -27,6 +28,21 @@ inline QString verdict(const BallCandidate& c)
         .arg(c.expectedRadiusPx)
         .arg(c.distancePx)
         .arg(QString("%1, %2").arg(c.scores.fitDx).arg(c.scores.fitDy));
+}
+
+// A candidate centred on `p` of `frame`, validated under `c` with the frame's colours (carpet by
+// colour, black against the local carpet).
+inline BallCandidate validateAt(const Config& c, const cv::Mat& frame, cv::Point p)
+{
+    const EdgeStages s(c, frame);
+    BallCandidate cand;
+    cand.x = p.x;
+    cand.y = p.y;
+    cand.distancePx = s.geometry.distanceAt(p.x, p.y);
+    cand.expectedRadiusPx = s.ball.radiusAt(cand.distancePx);
+    const FrameColour colour(frame, PixelFormat::Bgr8);
+    validateCandidate(cand, s.classes, s.edges, s.geometry, s.ball, c.validation, &colour);
+    return cand;
 }
 
 // The candidate at the centre of what `draw(frame, centre, expectedRadius)` drew `distance` px

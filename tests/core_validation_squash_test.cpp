@@ -24,18 +24,7 @@ Config squashedConfig(bool radialSquash)
     return c;
 }
 
-BallCandidate validate(const Config& c, const cv::Mat& frame, cv::Point p)
-{
-    const EdgeStages s(c, frame);
-    BallCandidate cand;
-    cand.x = p.x;
-    cand.y = p.y;
-    cand.distancePx = s.geometry.distanceAt(p.x, p.y);
-    cand.expectedRadiusPx = s.ball.radiusAt(cand.distancePx);
-    const FrameColour colour(frame, PixelFormat::Bgr8);
-    validateCandidate(cand, s.classes, s.edges, s.geometry, s.ball, c.validation, &colour);
-    return cand;
-}
+BallCandidate validate(const Config& c, const cv::Mat& frame, cv::Point p) { return validateAt(c, frame, p); }
 
 // The ball as the mirror shows it: an ellipse of the model's area-equivalent radius, its short
 // axis towards the mirror centre. Returns its centre.
