@@ -1,5 +1,6 @@
 #include "core/BlobSeeds.h"
 
+#include "core/BallEllipse.h"
 #include "core/BallModel.h"
 #include "core/FillBytes.h"
 #include "core/Geometry.h"
@@ -91,9 +92,9 @@ const std::vector<BlobSeed>& BlobSeeds::find(const cv::Mat& binary, const Geomet
             const double ratio = r.area / (M_PI * radius * radius);
             if (ratio < kMinAreaRatio || ratio > kMaxAreaRatio) continue;
             // Compact: no side longer than the ball (plus a pixel of blur either side); squashed,
-            // its longer (tangential) axis is radius / sqrt(squash).
+            // its longer (tangential) axis.
             const double squash = squashed ? ball.squashAt(geometry.distanceAt(cx, cy)) : 1.0;
-            const double side = 2.0 * radius / std::sqrt(std::min(1.0, squash)) + 2.0;
+            const double side = 2.0 * squashedTangentialRadius(radius, std::min(1.0, squash)) + 2.0;
             if (r.x1 - r.x0 + 1 > side || r.y1 - r.y0 + 1 > side) continue;
             keep(BlobSeed{cx, cy, std::abs(std::log(ratio))}, maxSeeds);
         }

@@ -1,5 +1,6 @@
 #include "core/RimTest.h"
 
+#include "core/BallEllipse.h"
 #include "core/Geometry.h"
 
 #include <algorithm>
@@ -25,7 +26,7 @@ RimClosure rimClosure(const cv::Mat& classes, const Geometry& geometry, const Co
         if (-cr < minInwardCos) continue;
         const double ct = (sa * ix - ca * iy) / il;  // along the tangential one
         // The ellipse of the same area as the circle, squashed radially (BallModel::squashAt).
-        const double border = radius / std::sqrt(cr * cr / q + q * ct * ct);
+        const double border = radius * squashedReach(cr, ct, q);
         const double rMin = std::max(0.5, border - bandPx);
         const double rMax = border + bandPx;
         bool judged = true;

@@ -5,11 +5,10 @@
 // carpet: walking inwards (towards the mirror centre) from its centre, carpet starts at its
 // border. A marker sits on a robot's dark body, a line end runs on inwards as line: their
 // inward rays meet something else, or carpet too early or too late.
+#include "core/BallEllipse.h"
 #include "core/ColourClasses.h"
 
 #include <opencv2/core.hpp>
-
-#include <cmath>
 
 namespace omnitune {
 
@@ -42,7 +41,7 @@ double rimArcRunPx(const cv::Mat& classes, const Geometry& geometry, const Colou
 // squashed radially by `squash` (1: the circle's diameter).
 inline double rimExpectedWidthPx(double radius, double squash)
 {
-    return 2.0 * radius / std::sqrt(squash > 0.0 ? squash : 1.0);
+    return 2.0 * squashedTangentialRadius(radius, squash > 0.0 ? squash : 1.0);
 }
 
 // How far (px) the circle of `radius` at `distancePx` from the mirror centre reaches past

@@ -1,5 +1,6 @@
 #include "core/Validation.h"
 
+#include "core/BallEllipse.h"
 #include "core/BallModel.h"
 #include "core/ColorClass.h"
 #include "core/ExpectedRadius.h"
@@ -49,7 +50,7 @@ struct Circle {
         if (squash == 1.0) return 1.0;
         const double cr = ca * radial.x + sa * radial.y;  // along the radial axis
         const double ct = sa * radial.x - ca * radial.y;  // along the tangential one
-        return 1.0 / std::sqrt(cr * cr / squash + squash * ct * ct);
+        return squashedReach(cr, ct, squash);
     }
     // A border point (relative to the centre) in the circle's space: the ellipse onto the
     // circle of the same area, so that the circle fit and its allowances apply unchanged.
