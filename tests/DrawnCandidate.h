@@ -77,6 +77,15 @@ void checkRuleAcceptsIt(Config c, bool ValidationOptions::*rule, double distance
     QVERIFY(off.scores.circularityPct < on.scores.circularityPct);
 }
 
+// The class id of the first colour class with `role` (0, no class, when none has it): what a
+// class-image scene paints for the carpet, a line or the ball.
+inline std::uint8_t roleClassId(const ColourClasses& classes, ColourRole role)
+{
+    for (std::size_t i = 0; i < classes.size(); ++i)
+        if (classes[i].role == role) return std::uint8_t(colourClassId(int(i)));
+    return 0;
+}
+
 // Walks a ray from (x, y) along +x out to `reach` px in half-pixel steps, each pixel once, as the
 // circularity test does; true as soon as `step(pixel, r)` is.
 template <class Step>

@@ -108,11 +108,7 @@ private slots:
         const Config c;
         const Geometry geometry(c.geometry, c.mask);
         const ColourRoles roles(c.colors.classes);
-        const auto id = [&](ColourRole role) {
-            for (std::size_t i = 0; i < c.colors.classes.size(); ++i)
-                if (c.colors.classes[i].role == role) return std::uint8_t(colourClassId(int(i)));
-            return std::uint8_t(0);
-        };
+        const auto id = [&](ColourRole role) { return roleClassId(c.colors.classes, role); };
         const cv::Point2d p = pointAt(c, kDistance, kAngle);
         const int x = int(p.x);
         const int y = int(p.y);
