@@ -2,6 +2,7 @@
 
 #include "app/StderrProgress.h"
 #include "calib/eval/FalsePositiveList.h"
+#include "calib/eval/MissList.h"
 #include "calib/eval/OutputFile.h"
 #include "calib/eval/QualityFloors.h"
 #include "calib/eval/QualityReport.h"
@@ -21,6 +22,7 @@ std::vector<OptionSpec> qualityToolOptions()
         {"frames", true, false, "N     with --quality-matrix: frames per ball cell (default: the floors file's, else 1)"},
         {"ball-free-frames", true, false, "N     with --quality-matrix: frames per ball-free cell (default 2)"},
         {"seed", true, false, "N     with --quality-matrix: the matrix seed (default 1)"},
+        {"spread-directions", false, false, "      with --quality-matrix: ball directions in golden-angle steps per frame (the matrix before 2026-12-02) instead of drawn per frame"},
         {"floors", true, false, "FILE  with --quality-matrix: check these floors as the gate test does"},
         {"write-floors", true, false, "FILE  with --quality-matrix: write floors (measured less a margin) to FILE"},
         {"threads", true, false, "N     with --quality-matrix: cells on N threads (default 1, honest timings; 0: all)"},
@@ -29,6 +31,9 @@ std::vector<OptionSpec> qualityToolOptions()
         {"auto-colours", true, false, "N     with --quality-matrix: each cell's colours by Auto colours from N frames of its field and light (default 0: the default colours)"},
         {"false-positives", false, false, "      with --quality-matrix: list every false-positive frame with its scores"},
         {"fp-crops", true, false, "DIR   with --false-positives: also write each one's surroundings, enlarged, as PNGs to DIR"},
+        {"miss-list", false, false, "      with --quality-matrix: list every missed ball frame of combined (the candidate at the ball, its scores)"},
+        {"miss-cause", true, false, "NAME  with --miss-list: only misses of this cause (e.g. non-green, no-candidate, circularity)"},
+        {"miss-crops", true, false, "DIR   with --miss-list: also write each missed ball's surroundings, enlarged, as PNGs to DIR"},
         {"deviations", true, false, "FILE  with --quality-matrix: also run each deviation from the thesis switched off (specific, combined)"},
     };
 }
@@ -74,6 +79,7 @@ int runQualityTool(const CommandLine& cl)
         !positive(cl, "ball-free-frames", matrix.ballFreeFramesPerCell, error) || !positive(cl, "seed", seed, error))
         return fail(error);
     matrix.seed = unsigned(seed);
+    if (cl.has("spread-directions")) matrix.directions = OpticsDirections::Spread;
 
     Config base;
     if (auto path = cl.value("config")) {
@@ -103,6 +109,12 @@ int runQualityTool(const CommandLine& cl)
         if (!v || *v < 0 || *v > 30) return fail("--auto-colours must be a whole number from 0 to 30, not '" + *t + "'");
         runOptions.autoColourFrames = *v;
     }
+    std::optional<MissCause> missCause;
+    if (auto name = cl.value("miss-cause")) {
+        missCause = missCauseNamed(*name);
+        if (!missCause) return fail("--miss-cause '" + *name + "' is not a cause of a miss (see the --misses table's columns)");
+    }
+    runOptions.recordMisses = cl.has("miss-list");
     std::vector<OpticsCell> cells = qualityMatrixCells(matrix);
     if (auto parts = cl.value("cells")) {
         cells = filterOpticsCells(cells, *parts);
@@ -145,6 +157,11 @@ int runQualityTool(const CommandLine& cl)
         md += "### Each false positive\n\n" + falsePositiveListMarkdown(run, shipped) + "\n";
         if (auto dir = cl.value("fp-crops"))
             if (auto e = writeFalsePositiveCrops(run, shipped, *dir)) return fail(*e);
+    }
+    if (cl.has("miss-list")) {
+        md += "### Each missed ball (combined)\n\n" + missListMarkdown(run, {shipped.back()}, missCause) + "\n";
+        if (auto dir = cl.value("miss-crops"))
+            if (auto e = writeMissCrops(run, {shipped.back()}, *dir, missCause)) return fail(*e);
     }
     if (run.variants.size() > shipped.size())
         md += "### Each deviation from the thesis switched off (the thesis' value)\n\n" + qualityDeviationsMarkdown(run) + "\n";

@@ -55,7 +55,7 @@ private slots:
 
         const FalsePositiveFrame& fp = off.falsePositiveFrames.front();
         QVERIFY(!fp.ballVisible);
-        QVERIFY(!fp.crop.empty());
+        QVERIFY(!fp.crop.image.empty());
         QVERIFY(fp.chosen.expectedRadiusPx > 0.0);
 
         const std::string md = falsePositiveListMarkdown(run, {0, 1});
@@ -73,8 +73,8 @@ private slots:
         int files = 0;
         for (const auto& entry : std::filesystem::directory_iterator(folder)) {
             const cv::Mat png = cv::imread(entry.path().string());
-            QCOMPARE(png.cols, fp.crop.cols * 4);
-            QCOMPARE(png.rows, fp.crop.rows * 4);
+            QCOMPARE(png.cols, fp.crop.image.cols * 4);
+            QCOMPARE(png.rows, fp.crop.image.rows * 4);
             ++files;
         }
         QCOMPARE(files, off.falsePositives);

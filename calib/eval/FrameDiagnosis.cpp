@@ -73,16 +73,24 @@ MissCause causeOf(int progress)
 
 }  // namespace
 
-MissCause diagnoseMiss(const PipelineResult& result, const TruthRow& truth, const ValidationOptions& validation,
-                       bool* radiusOff)
+const BallCandidate* candidateAtBall(const PipelineResult& result, const TruthRow& truth,
+                                     const ValidationOptions& validation)
 {
-    if (radiusOff) *radiusOff = false;
     const double near = std::max(truth.radiusPx, 2.0);
     const BallCandidate* best = nullptr;
     for (const BallCandidate& c : result.candidates) {
         if (std::hypot(c.x - truth.px, c.y - truth.py) > near) continue;
         if (!best || progressOf(c, validation) > progressOf(*best, validation)) best = &c;
     }
+    return best;
+}
+
+MissCause diagnoseMiss(const PipelineResult& result, const TruthRow& truth, const ValidationOptions& validation,
+                       bool* radiusOff, const BallCandidate** atBall)
+{
+    if (radiusOff) *radiusOff = false;
+    const BallCandidate* best = candidateAtBall(result, truth, validation);
+    if (atBall) *atBall = best;
     if (!best) return MissCause::NoCandidate;
     if (radiusOff) {
         const double allowance = std::max(validation.fitMaxRadiusErrorPx, validation.fitMaxRadiusError * best->expectedRadiusPx);

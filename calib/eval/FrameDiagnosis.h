@@ -49,8 +49,12 @@ FalsePositiveKind falsePositiveKindAt(std::size_t index);
 // The cause of a miss: `result` did not find the ball of `truth` (visible) within the max error.
 // `radiusOff` is set when the candidate at the ball expected a radius farther from the true one
 // than the circle fit allows (validation.fit_max_radius_error*): the radius model is off there.
+// `atBall` is set to that candidate (candidateAtBall), nullptr when there was none.
 MissCause diagnoseMiss(const PipelineResult& result, const TruthRow& truth, const ValidationOptions& validation,
-                       bool* radiusOff = nullptr);
+                       bool* radiusOff = nullptr, const BallCandidate** atBall = nullptr);
+// The candidate at the ball that got farthest through validation, or nullptr (the miss's witness).
+const BallCandidate* candidateAtBall(const PipelineResult& result, const TruthRow& truth,
+                                     const ValidationOptions& validation);
 
 // What the detection of `result` (a false positive) hit. `config` is the one the frame ran with.
 FalsePositiveKind diagnoseFalsePositive(const PipelineResult& result, const Config& config);

@@ -176,8 +176,12 @@ private:
             ++tally.withBall;
             if (verdict != TruthVerdict::Correct) {
                 bool radiusOff = false;
-                ++tally.missCauses[std::size_t(diagnoseMiss(result_, truth, config.validation, &radiusOff))];
+                const BallCandidate* atBall = nullptr;
+                const MissCause cause = diagnoseMiss(result_, truth, config.validation, &radiusOff, &atBall);
+                ++tally.missCauses[std::size_t(cause)];
                 tally.missesRadiusOff += radiusOff;
+                if (options_.recordMisses)
+                    tally.missedFrames.push_back(missedFrame(int(f), truth, cause, radiusOff, atBall, rendered.frames[f]));
                 continue;
             }
             ++tally.correct;
@@ -200,14 +204,29 @@ private:
         fp.kind = kind;
         const BallDetection& d = result_.detection;
         if (d.candidate >= 0 && d.candidate < int(result_.candidates.size())) fp.chosen = result_.candidates[std::size_t(d.candidate)];
-        const int half = int(std::ceil(FalsePositiveFrame::cropRadii * std::max(2.0, d.radiusPx)));
-        const cv::Rect box = cv::Rect(int(d.px) - half, int(d.py) - half, 2 * half + 1, 2 * half + 1) &
-                             cv::Rect(0, 0, image.cols, image.rows);
-        if (box.area() > 0) {
-            fp.crop = image(box).clone();
-            fp.cropOrigin = box.tl();
-        }
+        fp.crop = cropAround(image, d.px, d.py, int(std::ceil(FalsePositiveFrame::cropRadii * std::max(2.0, d.radiusPx))));
         return fp;
+    }
+
+    // A missed frame's record (QualityRunOptions::recordMisses only).
+    MissedFrame missedFrame(int frame, const TruthRow& truth, MissCause cause, bool radiusOff, const BallCandidate* atBall,
+                            const cv::Mat& image) const
+    {
+        MissedFrame m;
+        m.frame = frame;
+        m.truthPx = truth.px;
+        m.truthPy = truth.py;
+        m.truthRadiusPx = truth.radiusPx;
+        m.truthRangeM = std::hypot(truth.xM, truth.yM);
+        m.cause = cause;
+        m.radiusOff = radiusOff;
+        m.hasCandidate = atBall != nullptr;
+        if (atBall) m.atBall = *atBall;
+        const BallDetection& d = result_.detection;
+        m.detected = d.found && d.candidate >= 0 && d.candidate < int(result_.candidates.size());
+        if (m.detected) m.chosen = result_.candidates[std::size_t(d.candidate)];
+        m.crop = cropAround(image, truth.px, truth.py, int(std::ceil(MissedFrame::cropRadii * std::max(2.0, truth.radiusPx))));
+        return m;
     }
 
     const std::vector<QualityVariant>& variants_;

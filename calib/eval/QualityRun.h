@@ -5,6 +5,7 @@
 // and tallies per cell; groups (per ball kind, light, distractors, size, overall) add cells up.
 #include "calib/eval/ConfigOverride.h"
 #include "calib/eval/Evaluation.h"
+#include "calib/eval/FrameCrop.h"
 #include "calib/eval/FrameDiagnosis.h"
 #include "calib/sim/optics/OpticsCell.h"
 #include "core/Algorithm.h"
@@ -40,8 +41,24 @@ struct FalsePositiveFrame {
     double truthPx = 0.0, truthPy = 0.0, truthRadiusPx = 0.0;  // when ballVisible
     BallCandidate chosen;           // the detected candidate
     FalsePositiveKind kind;
-    cv::Mat crop;                   // BGR around the detection (FalsePositiveFrame::cropRadii radii)
-    cv::Point cropOrigin;           // the crop's top-left pixel in the frame
+    FrameCrop crop;                 // BGR around the detection (cropRadii radii)
+    static constexpr double cropRadii = 4.0;
+};
+
+// One missed ball frame as the listing shows it (omnitune-eval --miss-list), recorded only when
+// QualityRunOptions::recordMisses: the ball's truth, why it was missed, and the candidate at the
+// ball that got farthest through validation (when there was one), with the pixels around the ball.
+struct MissedFrame {
+    int frame = 0;  // index in its cell
+    double truthPx = 0.0, truthPy = 0.0, truthRadiusPx = 0.0;
+    double truthRangeM = 0.0;  // horizontal distance from the robot
+    MissCause cause = MissCause::NoCandidate;
+    bool radiusOff = false;         // the candidate's expected radius is off the true one
+    bool hasCandidate = false;
+    BallCandidate atBall;           // when hasCandidate
+    bool detected = false;          // something else was detected in the frame
+    BallCandidate chosen;           // when detected
+    FrameCrop crop;                 // BGR around the ball (cropRadii radii)
     static constexpr double cropRadii = 4.0;
 };
 
@@ -63,6 +80,9 @@ struct QualityTally {
     std::array<int, kFalsePositiveKindCount> falsePositiveKinds{};
     // Each false positive of a cell's tally; add() leaves them out (totals count, cells list).
     std::vector<FalsePositiveFrame> falsePositiveFrames;
+    // Each missed ball frame of a cell's tally when QualityRunOptions::recordMisses; add() leaves
+    // them out.
+    std::vector<MissedFrame> missedFrames;
 
     void add(const QualityTally& other);
     double detectionPct() const;      // correct / withBall; 0 without ball frames
@@ -90,6 +110,8 @@ struct QualityRunOptions {
     // judged frames (no truth is used), replace the fitted config's default colours. 0: the
     // default colours (the matrix as the gate runs it).
     int autoColourFrames = 0;
+    // Keep a MissedFrame (with its crop) for every missed ball frame (omnitune-eval --miss-list).
+    bool recordMisses = false;
 };
 
 struct QualityRun {
