@@ -21,6 +21,7 @@ std::vector<OpticsCell> qualityMatrixCells(const QualityMatrixOptions& options)
         cell.carpet = kCarpets[carpetTurn % std::size(kCarpets)];
         // Distinct, reproducible seeds: a cell's frames do not depend on which other cells run.
         cell.seed = options.seed * 1000003u + index++;
+        cell.directions = options.directions;
         cells.push_back(cell);
     };
     for (const cv::Size& size : options.sizes) {

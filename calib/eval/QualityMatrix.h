@@ -17,6 +17,9 @@ struct QualityMatrixOptions {
     unsigned seed = 1;              // every cell gets its own seed derived from this one
     bool ballFreeCells = true;
     std::vector<cv::Size> sizes = {{640, 480}, {480, 480}};
+    // Random: every frame its own ball direction (and rod). Spread reproduces the matrix before
+    // 2026-12-02, whose one or two frames per cell saw the ball in two narrow sectors only.
+    OpticsDirections directions = OpticsDirections::Random;
 };
 
 // The cells in a fixed order (size, light, distractors, ball; the ball-free cells last). The

@@ -163,7 +163,11 @@ OpticsScene opticsCellScene(const OpticsCell& cell, int frame, const OpticsRende
     const int n = std::max(cell.frames, 1);
     const double u = (frame + rng.uniform(0.15, 0.85)) / n;
     double dist = 0.5 + 4.5 * u;
-    double az = 2 * kPi * std::fmod(frame * 0.618034 + rng.uniform(0.0, 0.15), 1.0);
+    const bool random = cell.directions == OpticsDirections::Random;
+    double az = random ? rng.uniform(0.0, 2 * kPi) : 2 * kPi * std::fmod(frame * 0.618034 + rng.uniform(0.0, 0.15), 1.0);
+    // Which of a distractor's three situations the frame shows (the ball on a line; behind a rod,
+    // behind a robot, at our body): in turn, or drawn, so that one-frame cells meet them all.
+    const int situation = random ? rng.uniform(0, 3) : frame % 3;
     auto ballAt = [&](double d, double a) { return toFieldFrame(s.robot, {d * std::cos(a), d * std::sin(a)}); };
 
     switch (cell.distractors) {
@@ -180,7 +184,7 @@ OpticsScene opticsCellScene(const OpticsCell& cell, int frame, const OpticsRende
         s.headShadow = true;
         const double sa = rng.uniform(0.0, 2 * kPi), sd = rng.uniform(0.55, 0.9);
         s.headShadowAt = {sd * std::cos(sa), sd * std::sin(sa)};
-        if (frame % 3 == 1) {
+        if (situation == 1) {
             // Robot beside the halfway line, the ball touching it.
             s.robot.x = rng.uniform(-1.5, -0.5) * (rng.uniform(0, 2) ? 1 : -1);
             const cv::Point2d onLine(0.0625 + 0.11 + 0.005, s.robot.y + rng.uniform(-2.0, 2.0));
@@ -201,13 +205,14 @@ OpticsScene opticsCellScene(const OpticsCell& cell, int frame, const OpticsRende
         // The first search step that leaves 55..85 % of the silhouette unhidden wins; the
         // steps are shuffled by the frame so the hidden side varies.
         auto visibleShare = [&](const OpticsScene& trial) { return renderer.ballTruth(trial).visibleFraction; };
-        const int kind = frame % 3;
+        const int kind = situation;
         const double sign = rng.uniform(0, 2) ? 1.0 : -1.0;
         if (kind == 0) {
             // Partly behind a rod: find where a rod crosses the ball's distance, then slide off it.
             dist = std::max(dist, 1.8);
             const CatadioptricCamera& camera = renderer.camera();
-            for (double a = 0; a < 2 * kPi; a += 0.004) {
+            const double from = random ? az : 0.0;
+            for (double a = from; a < from + 2 * kPi; a += 0.004) {
                 const auto p = camera.project({dist * std::cos(a), dist * std::sin(a), 0.11});
                 if (!p) continue;
                 const int x = int(std::lround(p->x)), y = int(std::lround(p->y));
@@ -246,7 +251,7 @@ OpticsScene opticsCellScene(const OpticsCell& cell, int frame, const OpticsRende
         break;
     }
     }
-    if (!(cell.distractors == OpticsDistractors::RobotsFeetShadow && frame % 3 == 1)) s.ball = ballAt(dist, az);
+    if (!(cell.distractors == OpticsDistractors::RobotsFeetShadow && situation == 1)) s.ball = ballAt(dist, az);
     return s;
 }
 

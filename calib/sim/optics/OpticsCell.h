@@ -26,6 +26,13 @@ enum class OpticsDistractors { None, RobotsFeetShadow, NoiseBlur, RodsOcclusion 
 enum class OpticsCarpet { Green, CyanGreen, DarkGreen, Teal };
 enum class OpticsMirror { Hyperbolic, Spherical };
 
+// How a cell's frames choose the ball's direction from the robot. Spread: golden-angle steps
+// from frame to frame, so a tour of many frames sees every direction, but one or two frames see
+// only the first steps (two narrow sectors, the same in every cell). Random: each frame draws its
+// own from its seed, so cells of one or two frames together still cover the whole image, and a
+// ball behind a rod is looked for from a random direction (the quality matrix).
+enum class OpticsDirections { Spread, Random };
+
 struct OpticsCell {
     BallKind ball = BallKind::Orange;
     OpticsLight light = OpticsLight::Normal;
@@ -36,6 +43,7 @@ struct OpticsCell {
     bool ballPresent = true;
     int frames = 4;            // ball positions spread 0.5..5 m and over all image directions
     unsigned seed = 1;
+    OpticsDirections directions = OpticsDirections::Spread;
 };
 
 struct OpticsCellFrames {
