@@ -39,6 +39,9 @@ struct ValidationScores {
     double fitRadiusPx = 0.0;
     double fitDx = 0.0;
     double fitDy = 0.0;
+    // validation.fit_visible_border: the largest gap, along the usable rays, between the fitted
+    // and the expected circle's border, px (-1 when no circle was fitted).
+    double fitBorderGapPx = -1.0;
     double hintPct = 0.0;        // % of processed square pixels of validation.ball_hint_class
 };
 

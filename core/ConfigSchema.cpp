@@ -453,6 +453,15 @@ std::vector<ConfigKey> buildSchema()
     s.push_back(doubleKey("validation.fit_max_radius_error", "fraction", 0, 1, false,
                           "circle_fit: the same allowance as a fraction of the expected radius (near, big balls)",
                           [](auto& c) -> auto& { return c.validation.fitMaxRadiusError; }));
+    s.push_back(boolKey("validation.fit_visible_border", false,
+                        "circle_fit: a fitted circle whose centre or radius is off still passes when its border lies within the "
+                        "allowance of the expected border along every usable ray (a ball half behind our body or a rod shows one "
+                        "arc, whose fit slides along it); never looser for a ball seen whole; off: centre and radius alone",
+                        [](auto& c) -> auto& { return c.validation.fitVisibleBorder; }));
+    s.push_back(doubleKey("validation.fit_visible_min_share", "fraction", 0, 1, false,
+                          "fit_visible_border: applies only when at least this share of the rays is usable (a ball at our body "
+                          "shows over half of them, a line crossing a rod about a third)",
+                          [](auto& c) -> auto& { return c.validation.fitVisibleMinShare; }));
     s.push_back(boolKey("validation.carpet_by_colour", false,
                         "Green pixels are carpet only when their hue and saturation match the carpet measured around the candidate; "
                         "green panels of a ball then count as ball (non-green test, borders); off: every green pixel is carpet",

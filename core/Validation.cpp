@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace omnitune {
@@ -297,6 +298,23 @@ double fitAllowance(double radius, const ValidationOptions& options)
     return std::max(options.fitMaxRadiusErrorPx, options.fitMaxRadiusError * radius);
 }
 
+// The largest gap between the border of the circle (centre, radius), relative to the candidate,
+// and the expected circle of radius `expected` around the candidate, along the unit directions
+// `seen` (validation.fit_visible_border). Infinite when a direction misses the fitted circle.
+double visibleBorderGap(cv::Point2d centre, double radius, double expected, const std::vector<cv::Point2d>& seen)
+{
+    double gap = 0.0;
+    const double c2 = centre.x * centre.x + centre.y * centre.y;
+    for (const cv::Point2d& u : seen) {
+        const double cu = centre.x * u.x + centre.y * u.y;
+        const double disc = radius * radius - c2 + cu * cu;
+        if (disc < 0.0) return std::numeric_limits<double>::infinity();
+        const double along = cu + std::sqrt(disc);  // where the ray from the candidate leaves the fitted circle
+        gap = std::max(gap, std::abs(along - expected));
+    }
+    return gap;
+}
+
 // Thesis' third test: the share of the usable rays that find the ball's border in the band
 // around the expected radius (circleFit: around the fitted circle), and how much the border's
 // radius spreads.
@@ -314,7 +332,9 @@ void scoreCircularity(const Circle& c, ValidationScores& s)
     // Reused between candidates and frames: a warm pipeline allocates nothing.
     thread_local std::vector<cv::Point2d> points;
     thread_local std::vector<cv::Point2d> in;
+    thread_local std::vector<cv::Point2d> seen;  // unit directions of the usable rays (on the circle)
     points.clear();
+    seen.clear();
     for (int i = 0; i < rays; ++i) {
         const double a = 2.0 * M_PI * i / rays;
         const double ca = std::cos(a);
@@ -324,6 +344,8 @@ void scoreCircularity(const Circle& c, ValidationScores& s)
         const BorderRay ray = traceBorder(c, ca, sa, std::max(0.5, rMin * scale), rMax * scale);
         if (ray.occluded || !ray.judged) continue;
         ++usable;
+        const cv::Point2d onCircle = c.unsquash({ca * c.radius * scale, sa * c.radius * scale});
+        seen.push_back(onCircle / std::max(1e-9, std::hypot(onCircle.x, onCircle.y)));
         if (!ray.hit) continue;
         ++hits;
         const cv::Point2d at = c.unsquash(ray.hitAt);
@@ -351,6 +373,8 @@ void scoreCircularity(const Circle& c, ValidationScores& s)
     s.fitRadiusPx = radius;
     s.fitDx = centre.x;
     s.fitDy = centre.y;
+    // An arc of less than fitVisibleMinShare of the rays (a line crossing a rod) fits too much.
+    if (usable >= options.fitVisibleMinShare * rays) s.fitBorderGapPx = visibleBorderGap(centre, radius, c.radius, seen);
     s.circularityPct = 100.0 * double(in.size()) / usable;
 }
 
@@ -407,9 +431,11 @@ RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& op
     if (c.scores.circularityPct < options.minCircularityPct) return RejectReason::Circularity;
     if (options.circleFit) {
         const double allowance = fitAllowance(c.expectedRadiusPx, options);
-        if (std::abs(c.scores.fitRadiusPx - c.expectedRadiusPx) > allowance ||
-            std::hypot(c.scores.fitDx, c.scores.fitDy) > allowance)
-            return RejectReason::Circularity;
+        const bool offModel = std::abs(c.scores.fitRadiusPx - c.expectedRadiusPx) > allowance ||
+                              std::hypot(c.scores.fitDx, c.scores.fitDy) > allowance;
+        const bool seenBorderFits = options.fitVisibleBorder && c.scores.fitBorderGapPx >= 0.0 &&
+                                    c.scores.fitBorderGapPx <= allowance;
+        if (offModel && !seenBorderFits) return RejectReason::Circularity;
     }
     if (c.scores.runOnPct > options.maxRunOnPct) return RejectReason::RunsOn;
     return RejectReason::None;

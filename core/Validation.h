@@ -78,6 +78,15 @@ struct ValidationOptions {
     bool circleFit = true;
     double fitMaxRadiusErrorPx = 3.0;  // px
     double fitMaxRadiusError = 0.25;   // fraction of the expected radius
+    // The fitted circle is judged against the expected one only where the ball is seen: it passes
+    // when, along every usable ray (not masked, occluded or out of the mirror), its border lies
+    // within the same allowance of the expected border. A ball half behind our body or a rod
+    // shows one arc; the Hough's centre and the fit both slide along that arc's axis when the
+    // radius model is 2 px off, so centre and radius are off together while the visible border
+    // fits. For a ball seen whole this is no looser than the centre and radius tests (the largest
+    // border gap is the centre's offset plus the radius' error), so only partly hidden balls gain.
+    bool fitVisibleBorder = true;
+    double fitVisibleMinShare = 0.5;  // of the rays usable for it to apply (a line crossing a rod shows ~0.3)
     // A ray's border point is the edge pixel it met, not the point at the ray's step where it
     // met it (up to ~0.7 px off: the band of a 3-6 px ball is 1.5 px). Off by default: on the
     // optics matrix it found 1.3 points more balls (combined), but it also makes a blurred round
