@@ -292,12 +292,6 @@ void nearCircle(const std::vector<cv::Point2d>& points, cv::Point2d centre, doub
         if (std::abs(std::hypot(p.x - centre.x, p.y - centre.y) - radius) <= tol) in.push_back(p);
 }
 
-// How far the fitted radius and centre may be off the expected ones.
-double fitAllowance(double radius, const ValidationOptions& options)
-{
-    return std::max(options.fitMaxRadiusErrorPx, options.fitMaxRadiusError * radius);
-}
-
 // The largest gap between the border of the circle (centre, radius), relative to the candidate,
 // and the expected circle of radius `expected` around the candidate, along the unit directions
 // `seen` (validation.fit_visible_border). Infinite when a direction misses the fitted circle.
@@ -344,8 +338,10 @@ void scoreCircularity(const Circle& c, ValidationScores& s)
         const BorderRay ray = traceBorder(c, ca, sa, std::max(0.5, rMin * scale), rMax * scale);
         if (ray.occluded || !ray.judged) continue;
         ++usable;
-        const cv::Point2d onCircle = c.unsquash({ca * c.radius * scale, sa * c.radius * scale});
-        seen.push_back(onCircle / std::max(1e-9, std::hypot(onCircle.x, onCircle.y)));
+        if (options.fitVisibleBorder) {
+            const cv::Point2d onCircle = c.unsquash({ca * c.radius * scale, sa * c.radius * scale});
+            seen.push_back(onCircle / std::max(1e-9, std::hypot(onCircle.x, onCircle.y)));
+        }
         if (!ray.hit) continue;
         ++hits;
         const cv::Point2d at = c.unsquash(ray.hitAt);
@@ -374,7 +370,7 @@ void scoreCircularity(const Circle& c, ValidationScores& s)
     s.fitDx = centre.x;
     s.fitDy = centre.y;
     // An arc of less than fitVisibleMinShare of the rays (a line crossing a rod) fits too much.
-    if (usable >= options.fitVisibleMinShare * rays) s.fitBorderGapPx = visibleBorderGap(centre, radius, c.radius, seen);
+    if (options.fitVisibleBorder && usable >= options.fitVisibleMinShare * rays) s.fitBorderGapPx = visibleBorderGap(centre, radius, c.radius, seen);
     s.circularityPct = 100.0 * double(in.size()) / usable;
 }
 
@@ -479,6 +475,11 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
     scoreCircularity(circle, s);
     scoreRunOn(circle, s);
     return s;
+}
+
+double fitAllowance(double expectedRadiusPx, const ValidationOptions& options)
+{
+    return std::max(options.fitMaxRadiusErrorPx, options.fitMaxRadiusError * expectedRadiusPx);
 }
 
 void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry,

@@ -226,6 +226,10 @@ struct ValidationOptions {
 // thesis order non-green, non-black, circularity, then our run-on test). `classes` holds colour
 // class ids, `edges` the edge image, `colour` (optional) the frame's colours for carpetByColour,
 // `roles` what the ids are: "green" is every field class, "black" every black class.
+// How far a fitted circle's radius and centre may be off the expected ones (circle_fit):
+// max(fit_max_radius_error_px, fit_max_radius_error x the expected radius).
+double fitAllowance(double expectedRadiusPx, const ValidationOptions& options);
+
 void validateCandidate(BallCandidate& candidate, const cv::Mat& classes, const cv::Mat& edges,
                        const Geometry& geometry, const BallModel& ball, const ValidationOptions& options,
                        const FrameColour* colour = nullptr, const ColourRoles& roles = defaultColourRoles());

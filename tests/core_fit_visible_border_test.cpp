@@ -65,7 +65,7 @@ private slots:
         const BallCandidate on = validateDrawn(c, kDistance, kAngle, drawBiggerBehind);
         QVERIFY2(on.rejected == RejectReason::None, qPrintable(verdict(on)));
         // The fit's centre is off by more than the allowance: the old rule refuses it.
-        const double allowance = std::max(c.validation.fitMaxRadiusErrorPx, c.validation.fitMaxRadiusError * on.expectedRadiusPx);
+        const double allowance = fitAllowance(on.expectedRadiusPx, c.validation);
         QVERIFY2(std::hypot(on.scores.fitDx, on.scores.fitDy) > allowance, qPrintable(verdict(on)));
         QVERIFY(on.scores.fitBorderGapPx >= 0.0 && on.scores.fitBorderGapPx <= allowance);
         c.validation.fitVisibleBorder = false;
@@ -79,8 +79,7 @@ private slots:
         const Config c = configHiding(std::nullopt);
         const BallCandidate whole = validateDrawn(c, kDistance, kAngle, drawBiggerBehind);
         QVERIFY2(whole.rejected == RejectReason::Circularity, qPrintable(verdict(whole)));
-        QVERIFY(whole.scores.fitBorderGapPx > std::max(c.validation.fitMaxRadiusErrorPx,
-                                                        c.validation.fitMaxRadiusError * whole.expectedRadiusPx));
+        QVERIFY(whole.scores.fitBorderGapPx > fitAllowance(whole.expectedRadiusPx, c.validation));
     }
 
     void aShortArcIsNotEnough()

@@ -1,5 +1,7 @@
 #include "calib/eval/FrameDiagnosis.h"
 
+#include "core/Validation.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -93,7 +95,7 @@ MissCause diagnoseMiss(const PipelineResult& result, const TruthRow& truth, cons
     if (atBall) *atBall = best;
     if (!best) return MissCause::NoCandidate;
     if (radiusOff) {
-        const double allowance = std::max(validation.fitMaxRadiusErrorPx, validation.fitMaxRadiusError * best->expectedRadiusPx);
+        const double allowance = fitAllowance(best->expectedRadiusPx, validation);
         *radiusOff = std::abs(truth.radiusPx - best->expectedRadiusPx) > allowance;
     }
     return causeOf(progressOf(*best, validation));
