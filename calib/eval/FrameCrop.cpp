@@ -3,7 +3,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <system_error>
 
@@ -19,6 +21,11 @@ FrameCrop cropAround(const cv::Mat& frame, double x, double y, int half)
         crop.origin = box.tl();
     }
     return crop;
+}
+
+FrameCrop cropAroundCircle(const cv::Mat& frame, double x, double y, double radius)
+{
+    return cropAround(frame, x, y, int(std::ceil(kCropRadii * std::max(2.0, radius))));
 }
 
 std::optional<std::string> writeEnlargedCrop(const std::string& path, const FrameCrop& crop, int scale,

@@ -17,6 +17,11 @@ struct FrameCrop {
 // The square of half-side `half` px around (x, y), clipped to the frame.
 FrameCrop cropAround(const cv::Mat& frame, double x, double y, int half);
 
+// Around a circle (a detection, a ball) of `radius` px: kCropRadii radii (of at least 2 px) each
+// side, enough to see what it touches.
+constexpr double kCropRadii = 4.0;
+FrameCrop cropAroundCircle(const cv::Mat& frame, double x, double y, double radius);
+
 // A circle drawn on an enlarged crop, in frame px.
 struct CropCircle {
     double x = 0, y = 0, radius = 0;

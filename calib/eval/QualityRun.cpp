@@ -204,7 +204,7 @@ private:
         fp.kind = kind;
         const BallDetection& d = result_.detection;
         if (d.candidate >= 0 && d.candidate < int(result_.candidates.size())) fp.chosen = result_.candidates[std::size_t(d.candidate)];
-        fp.crop = cropAround(image, d.px, d.py, int(std::ceil(FalsePositiveFrame::cropRadii * std::max(2.0, d.radiusPx))));
+        fp.crop = cropAroundCircle(image, d.px, d.py, d.radiusPx);
         return fp;
     }
 
@@ -225,7 +225,7 @@ private:
         const BallDetection& d = result_.detection;
         m.detected = d.found && d.candidate >= 0 && d.candidate < int(result_.candidates.size());
         if (m.detected) m.chosen = result_.candidates[std::size_t(d.candidate)];
-        m.crop = cropAround(image, truth.px, truth.py, int(std::ceil(MissedFrame::cropRadii * std::max(2.0, truth.radiusPx))));
+        m.crop = cropAroundCircle(image, truth.px, truth.py, truth.radiusPx);
         return m;
     }
 

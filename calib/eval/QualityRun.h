@@ -41,8 +41,7 @@ struct FalsePositiveFrame {
     double truthPx = 0.0, truthPy = 0.0, truthRadiusPx = 0.0;  // when ballVisible
     BallCandidate chosen;           // the detected candidate
     FalsePositiveKind kind;
-    FrameCrop crop;                 // BGR around the detection (cropRadii radii)
-    static constexpr double cropRadii = 4.0;
+    FrameCrop crop;                 // BGR around the detection (cropAroundCircle)
 };
 
 // One missed ball frame as the listing shows it (omnitune-eval --miss-list), recorded only when
@@ -58,8 +57,7 @@ struct MissedFrame {
     BallCandidate atBall;           // when hasCandidate
     bool detected = false;          // something else was detected in the frame
     BallCandidate chosen;           // when detected
-    FrameCrop crop;                 // BGR around the ball (cropRadii radii)
-    static constexpr double cropRadii = 4.0;
+    FrameCrop crop;                 // BGR around the ball (cropAroundCircle)
 };
 
 // What one variant did on a set of frames.
