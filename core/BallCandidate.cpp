@@ -24,6 +24,7 @@ std::string_view rejectReasonName(RejectReason r)
     case RejectReason::Circularity: return "circularity";
     case RejectReason::RunsOn: return "runs on";
     case RejectReason::LineJunction: return "line junction";
+    case RejectReason::LineBlob: return "line blob";
     case RejectReason::NotChosen: return "valid, not chosen";
     }
     return "?";

@@ -22,6 +22,7 @@ enum class RejectReason {
     Circularity,      // too few edges at the expected radius
     RunsOn,           // the centre's colour runs on beyond the circle on too many rays: a line corner or end
     LineJunction,     // field lines leave it like spokes, or it is mostly line with one arm (validation.line_arms)
+    LineBlob,         // no line arm, but mostly line colour inside (validation.line_blob_armless_min_pct)
     NotChosen,        // valid, but another valid candidate scored higher
 };
 

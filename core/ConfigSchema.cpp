@@ -255,6 +255,12 @@ std::vector<ConfigKey> buildSchema()
                        "the ball, so a ball touching a line merges with it into one blob. 128: an edge also runs between the "
                        "ball and the line",
                        [](auto& c) -> auto& { return c.edges.whiteLevel; }));
+    s.push_back(boolKey("edges.drop_specks", false,
+                        "On the binary input, Canny runs with both thresholds raised to just below a straight border's "
+                        "gradient (4 x the smallest step between the image's levels, less one): the rings of edges around "
+                        "one-pixel specks (dim light's black freckles on the carpet) drop out and every border stays. With "
+                        "white_level the smallest step is the line's, so black specks on green stay. Off: the thresholds as set",
+                        [](auto& c) -> auto& { return c.edges.dropSpecks; }));
     ConfigKey edgeInput{"edges.input", ValueType::Choice, "", 0, 0,
                         "What Canny (and cv::HoughCircles) run on: binary, the green / non-green image (thesis ch. 4); gray, "
                         "the frame's own grayscale without colour segmentation (thesis solutions 2 and 4; the colour classes "
@@ -402,7 +408,7 @@ std::vector<ConfigKey> buildSchema()
     // validation
     s.push_back(doubleKey("validation.min_non_green_pct", "%", 0, 100, true, "Non-green share the ball square needs; lower lets carpet patches through",
                           [](auto& c) -> auto& { return c.validation.minNonGreenPct; }));
-    s.push_back(doubleKey("validation.min_non_black_pct", "%", 0, 100, false, "Non-black share the ball square needs; higher rejects part-black balls, lower lets robots through (thesis: 50, which on the optics matrix found 2 points fewer balls and no fewer false positives)",
+    s.push_back(doubleKey("validation.min_non_black_pct", "%", 0, 100, false, "Non-black share the ball square needs; higher rejects part-black balls, lower lets robots through (thesis: 50, which on the optics matrix found two points fewer balls and no fewer false positives)",
                           [](auto& c) -> auto& { return c.validation.minNonBlackPct; }));
     s.push_back(doubleKey("validation.min_circularity_pct", "%", 0, 100, true, "Share of the circle found as edges; higher loses blurred moving balls, lower accepts lines and feet",
                           [](auto& c) -> auto& { return c.validation.minCircularityPct; }));
@@ -627,6 +633,19 @@ std::vector<ConfigKey> buildSchema()
                           "line_arms: two arms less than this apart make a junction; farther apart they are one line through the "
                           "candidate (a ball lying on it); 0 lets every two-armed candidate pass",
                           [](auto& c) -> auto& { return c.validation.lineArmsMaxAngleDeg; }));
+    s.push_back(boolKey("validation.line_arms_pale", false,
+                        "line_arms: pale pixels count as line too (saturation at most pale_line_max_saturation, brightness at "
+                        "least pale_line_min_value_ratio x the carpet's around the candidate): in dim and uneven light the far "
+                        "lines leave the line class and their junctions lose their arms; off: the line class alone",
+                        [](auto& c) -> auto& { return c.validation.lineArmsPale; }));
+    s.push_back(intKey("validation.pale_line_max_saturation", "0..255", 0, 255, false,
+                       "line_arms_pale: the most saturation a pale line pixel has (a line is grey or white, the carpet and "
+                       "the ball's panels coloured)",
+                       [](auto& c) -> auto& { return c.validation.paleLineMaxSaturation; }));
+    s.push_back(doubleKey("validation.pale_line_min_value_ratio", "ratio", 1, 10, false,
+                          "line_arms_pale: a pale line pixel's brightness (V) is at least this many times the carpet's mean V "
+                          "in the ring around the candidate (carpet_ring_inner..carpet_ring_outer)",
+                          [](auto& c) -> auto& { return c.validation.paleLineMinValueRatio; }));
     s.push_back(doubleKey("validation.line_arms_max_radius_px", "px", 0, 100, false,
                           "line_arms: candidates whose expected radius is larger are not judged (a line junction looks round only "
                           "at a far ball's size; a near ball's border meets lines at many angles)",
@@ -640,6 +659,19 @@ std::vector<ConfigKey> buildSchema()
                           "line_blob_min_pct: the disc (expected radii around the centre) whose line share is measured, inside "
                           "the ball's blurred border",
                           [](auto& c) -> auto& { return c.validation.lineBlobDisc; }));
+    s.push_back(doubleKey("validation.line_blob_armless_min_pct", "%", 0, 100, false,
+                          "line_arms: a candidate with no line arm is rejected (\"line blob\") when this share of its inside "
+                          "(line_blob_disc) is line colour and masked or outside pixels lie within line_blob_cut_reach: a "
+                          "line's end cut by the rim, a rod or our body (its arm ended there); 100 turns it off",
+                          [](auto& c) -> auto& { return c.validation.lineBlobArmlessMinPct; }));
+    s.push_back(doubleKey("validation.line_blob_cut_reach", "radii", 0, 5, false,
+                          "line_blob_armless_min_pct: the disc (expected radii around the centre) that must reach a masked or "
+                          "outside pixel; 0 judges every armless blob, the penalty spot and a plain white ball in the open too",
+                          [](auto& c) -> auto& { return c.validation.lineBlobCutReach; }));
+    s.push_back(doubleKey("validation.line_blob_armless_max_panel_pct", "%", 0, 100, false,
+                          "line_blob_armless_min_pct: not applied when more than this share of the disc has a class with the "
+                          "black, ball or marker role (a white ball's dark or coloured panels; no line has them)",
+                          [](auto& c) -> auto& { return c.validation.lineBlobArmlessMaxPanelPct; }));
 
     // algorithm
     ConfigKey alg{"algorithm.method", ValueType::Choice, "", 0, 0,

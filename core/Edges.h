@@ -32,6 +32,10 @@ struct EdgeOptions {
     // low bits as "not green" (weight & ~binary).
     int whiteLevel = 0;
     EdgeInput input = EdgeInput::Binary;
+    // On the binary input, raise both thresholds to just below a straight border's gradient
+    // (core/SpeckFreeEdges.h): the ring of edges around a one-pixel speck drops out, every border
+    // stays. Off: the thesis, the thresholds as set.
+    bool dropSpecks = true;
 };
 
 // Field classes ("green") -> 255, line classes ("white") -> whiteLevel, other classes -> 0,

@@ -1,6 +1,7 @@
 #include "core/FrontEnd.h"
 
 #include "core/FillBytes.h"
+#include "core/SpeckFreeEdges.h"
 #include "core/Stopwatch.h"
 
 #include <opencv2/core.hpp>
@@ -9,7 +10,8 @@
 namespace omnitune {
 
 FrontEnd::FrontEnd(const Config& config)
-    : lut_(config.colors), roles_(config.colors.classes), geometry_(config.geometry, config.mask), edgeOptions_(config.edges)
+    : lut_(config.colors), roles_(config.colors.classes), geometry_(config.geometry, config.mask), edgeOptions_(config.edges),
+      cannyOptions_(speckFreeCannyOptions(config.edges))
 {
 }
 
@@ -25,7 +27,7 @@ void FrontEnd::process(const cv::Mat& frame, PixelFormat format, cv::Mat& classe
     makeBinary(classes, geometry_, binary, edgeOptions_.whiteLevel, roles_);
     if (edgeOptions_.input == EdgeInput::Gray) makeGray(frame, format == PixelFormat::Uyvy, gray_);
     const double binaryMs = clock.lap();
-    canny_.detect(edgeSource(binary), edgeOptions_, edges);
+    canny_.detect(edgeSource(binary), cannyOptions_, edges);
     cv::bitwise_and(edges, geometry_.edgeMask(), edges);
     const double edgesMs = clock.lap();
     if (timings) {

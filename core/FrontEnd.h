@@ -51,6 +51,7 @@ private:
     ColourRoles roles_;
     Geometry geometry_;
     EdgeOptions edgeOptions_;
+    EdgeOptions cannyOptions_;  // edgeOptions_ with drop_specks applied
     CannyDetector canny_;
     SegmentStats stats_;
     cv::Mat gray_;

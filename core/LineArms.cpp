@@ -17,7 +17,7 @@ int armRayCount(double farPx) { return std::clamp(int(std::ceil(4.0 * M_PI * far
 }  // namespace
 
 LineArms lineArmsAround(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
-                        double radiusPx, double reach, double lateralPx)
+                        double radiusPx, double reach, double lateralPx, const PaleLine& pale)
 {
     CV_Assert(classes.type() == CV_8UC1 && radiusPx > 0.0 && reach >= 1.0 && lateralPx >= 0.0);
     const double farPx = reach * radiusPx;
@@ -26,7 +26,8 @@ LineArms lineArmsAround(const cv::Mat& classes, const Geometry& geometry, const 
         const int ix = int(std::lround(px));
         const int iy = int(std::lround(py));
         if (ix < 0 || iy < 0 || ix >= classes.cols || iy >= classes.rows || !geometry.isUsed(ix, iy)) return false;
-        return roles.line(classes.ptr<std::uint8_t>(iy)[ix]);
+        const std::uint8_t id = classes.ptr<std::uint8_t>(iy)[ix];
+        return roles.line(id) || pale.at(ix, iy, id, roles);
     };
     auto isArm = [&](int i) {
         const double a = 2.0 * M_PI * i / rays;

@@ -7,6 +7,7 @@
 // lies on, which leaves on opposite sides. validation.line_arms rejects a candidate with two
 // arms at an angle (or three or more).
 #include "core/ColourClasses.h"
+#include "core/PaleLine.h"
 
 #include <opencv2/core.hpp>
 
@@ -24,9 +25,9 @@ struct LineArms {
 // The arms of the circle at (x, y) of `radiusPx`: a ray is an arm when every step from radiusPx
 // out to reach x radiusPx meets a processed line-class pixel on the ray or within lateralPx
 // beside it (lines bend and the centre is a pixel off). Masked or out-of-image pixels end an arm.
-// A circle whose every ray is an arm lies inside a large line-coloured area: no arms.
-// No allocation.
+// A circle whose every ray is an arm lies inside a large line-coloured area: no arms. With
+// `pale`, a pale line pixel (core/PaleLine.h) counts as line too. No allocation.
 LineArms lineArmsAround(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
-                        double radiusPx, double reach, double lateralPx);
+                        double radiusPx, double reach, double lateralPx, const PaleLine& pale = {});
 
 }  // namespace omnitune

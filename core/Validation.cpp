@@ -437,6 +437,26 @@ RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& op
     return RejectReason::None;
 }
 
+// The carpet's colour in the ring around a circle of `radius` (carpet_ring_*).
+CarpetColour carpetRingAround(const FrameColour& colour, const cv::Mat& classes, const Geometry& geometry,
+                              const ColourRoles& roles, int x, int y, double radius, const ValidationOptions& options)
+{
+    return CarpetColour::around(colour, classes, geometry, roles, x, y,
+                                options.carpetRingInner * radius + options.carpetRingMarginPx,
+                                options.carpetRingOuter * radius + 2.0 * options.carpetRingMarginPx);
+}
+
+// Pale line pixels for the line-arms test (line_arms_pale): brighter than the carpet around the
+// candidate by pale_line_min_value_ratio. None without the frame's colours or a carpet seen.
+PaleLine paleLineAround(const FrameColour* colour, const cv::Mat& classes, const Geometry& geometry,
+                        const ColourRoles& roles, const BallCandidate& c, const ValidationOptions& options)
+{
+    if (!options.lineArmsPale || !colour) return {};
+    const CarpetColour carpet = carpetRingAround(*colour, classes, geometry, roles, c.x, c.y, c.expectedRadiusPx, options);
+    if (!carpet.valid()) return {};
+    return {colour, options.paleLineMaxSaturation, options.paleLineMinValueRatio * carpet.value()};
+}
+
 }  // namespace
 
 ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,
@@ -453,9 +473,7 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
     if (options.foreignRaysUnknown) circle.ballClass = ballClassAt(classes, roles, x, y);
     if (colour && (options.carpetByColour || options.blackByLocalCarpet)) {
         CV_Assert(colour->frame().size() == classes.size());
-        circle.carpet = CarpetColour::around(*colour, classes, geometry, roles, x, y,
-                                             options.carpetRingInner * radius + options.carpetRingMarginPx,
-                                             options.carpetRingOuter * radius + 2.0 * options.carpetRingMarginPx);
+        circle.carpet = carpetRingAround(*colour, classes, geometry, roles, x, y, radius, options);
     }
     // The walk of the green-panel test reads classes only, never carpetAt (which asks it).
     struct CirclePanelPixels : PanelPixels {
@@ -515,11 +533,28 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
     if (c.rejected == RejectReason::None && options.lineArms && c.expectedRadiusPx <= options.lineArmsMaxRadiusPx) {
         // From the ball's border as the fit found it: a larger ball's tangent line is no arm.
         const double radius = std::max(c.expectedRadiusPx, c.scores.fitRadiusPx);
+        const PaleLine pale = paleLineAround(colour, classes, geometry, roles, c, options);
         const LineArms arms = lineArmsAround(classes, geometry, roles, c.x, c.y, radius, options.lineArmsReach,
-                                             options.lineArmsLateralPx);
-        const bool lineEnd = arms.count >= 1 && options.lineBlobMinPct < 100.0 && lineSharePct(classes, geometry, roles, c.x, c.y,
-                                                               options.lineBlobDisc * c.expectedRadiusPx) >= options.lineBlobMinPct;
-        if (arms.junction(options.lineArmsMaxAngleDeg) || lineEnd) c.rejected = RejectReason::LineJunction;
+                                             options.lineArmsLateralPx, pale);
+        const double blobMinPct = arms.count >= 1 ? options.lineBlobMinPct : options.lineBlobArmlessMinPct;
+        bool lineBlob = false;
+        if (blobMinPct < 100.0) {
+            const DiscShares disc = discShares(classes, geometry, roles, c.x, c.y, options.lineBlobDisc * c.expectedRadiusPx, pale);
+            lineBlob = disc.linePct >= blobMinPct;
+            if (lineBlob && arms.count == 0) {
+                // Without an arm: a blob whose line runs on behind a rod, our body or the rim (its arm
+                // ended there), unless it shows a ball's panels. One in the open (the penalty spot, a
+                // white ball) passes.
+                const bool cut = options.lineBlobCutReach <= 0.0 ||
+                                 discShares(classes, geometry, roles, c.x, c.y, options.lineBlobCutReach * c.expectedRadiusPx)
+                                         .unusedPct > 0.0;
+                lineBlob = cut && disc.panelPct <= options.lineBlobArmlessMaxPanelPct;
+            }
+        }
+        if (arms.junction(options.lineArmsMaxAngleDeg) || (lineBlob && arms.count >= 1))
+            c.rejected = RejectReason::LineJunction;
+        else if (lineBlob)
+            c.rejected = RejectReason::LineBlob;
     }
 }
 

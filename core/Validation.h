@@ -211,6 +211,13 @@ struct ValidationOptions {
     double lineArmsLateralPx = 0.5;     // px; beside the ray a line pixel still counts (bent lines); 1 took a
                                         // line beside a 5 px ball for two arms
     double lineArmsMaxAngleDeg = 150.0; // degrees; two arms farther apart are one line through
+    // Pale pixels count as line for the arms (core/PaleLine.h): saturation at most
+    // paleLineMaxSaturation and V at least paleLineMinValueRatio x the carpet's V around the
+    // candidate. In dim and uneven light the far lines leave the line class; their junctions then
+    // had no arms. Needs the frame's colours; off: the line class alone.
+    bool lineArmsPale = true;
+    int paleLineMaxSaturation = 90;      // 0..255
+    double paleLineMinValueRatio = 1.4;  // x the carpet's mean V
     // px; larger candidates are not judged: a junction looks round only at a far ball's size,
     // and a near ball's border meets lines at many angles (balls at 10-18 px were lost).
     double lineArmsMaxRadiusPx = 8.0;
@@ -220,6 +227,18 @@ struct ValidationOptions {
     // positives there 47-80 %. 100 turns it off; a white ball touching a far line is lost to it.
     double lineBlobMinPct = 57.0;
     double lineBlobDisc = 0.8;  // expected radii; inside the blurred border
+    // %; a candidate with no line arm at all is rejected (LineBlob) when this share of the same
+    // disc is line colour and its line runs on out of sight within lineBlobCutReach: a line's end
+    // against the rim, a rod or our body, where its arm ended. Such blobs made most of the optics
+    // matrix's false positives (66-100 % line); no ball there showed more than 48 %. 100 turns it
+    // off.
+    double lineBlobArmlessMinPct = 65.0;
+    // expected radii; the disc around the centre that must reach masked or outside pixels. 0
+    // judges every armless blob: the penalty spot too, and a plain white ball in the open.
+    double lineBlobCutReach = 1.5;
+    // %; not when more than this share of the line-share disc shows a ball's panels (black, ball
+    // or marker classes), which no line has: a white ball behind a rod keeps its dark panels.
+    double lineBlobArmlessMaxPanelPct = 3.0;
 };
 
 // Scores one candidate and sets its `rejected` field (first failing test: too small, then the

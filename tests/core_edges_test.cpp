@@ -1,6 +1,7 @@
 // The binary (green / non-green) image and the Canny edge detector.
 #include "DrawnScene.h"
 #include "core/ConfigSchema.h"
+#include "core/SpeckFreeEdges.h"
 
 #include <QtTest>
 
@@ -53,6 +54,53 @@ private slots:
         // Other levels are rounded down to a multiple of 16, which keeps the Hough's centre test.
         c.edges.whiteLevel = 100;
         QCOMPARE(int(EdgeStages(c, frame).binary.at<uchar>(ball.y, lineX)), 96);
+    }
+
+    // edges.drop_specks: a one-pixel speck on the carpet (dim light's black freckles) makes a ring
+    // of edges with the thesis' thresholds and none with the switch on; a ball's border and a
+    // 3x3 px blob's stay as they were. (A 2x2 speck has no edges either way: its four pixels tie
+    // in the non-maximum suppression.)
+    void dropSpecksRemovesSpeckRingsAndKeepsBorders()
+    {
+        Config c;
+        QVERIFY(c.edges.dropSpecks);
+        cv::Mat frame = greenField(c);
+        const cv::Point ball = drawBall(frame, c, 150, 30);
+        auto blob = [&](double angleDeg, int side) {
+            const cv::Point p(pointAt(c, 160, angleDeg));
+            cv::rectangle(frame, p, p + cv::Point(side - 1, side - 1), kBlack, cv::FILLED);
+            return cv::Rect(p.x - 2, p.y - 2, side + 4, side + 4);
+        };
+        const cv::Rect speck = blob(200, 1);
+        const cv::Rect small = blob(300, 3);
+        const int r = int(std::ceil(expectedRadius(c, 150))) + 3;
+        const cv::Rect aroundBall(ball.x - r, ball.y - r, 2 * r + 1, 2 * r + 1);
+
+        const EdgeStages on(c, frame);
+        c.edges.dropSpecks = false;
+        const EdgeStages off(c, frame);
+        QVERIFY(cv::countNonZero(off.edges(speck)) > 0);
+        QCOMPARE(cv::countNonZero(on.edges(speck)), 0);
+        for (const cv::Rect& border : {aroundBall, small}) {
+            QVERIFY(cv::countNonZero(on.edges(border)) > 0);
+            QCOMPARE(cv::countNonZero(on.edges(border) != off.edges(border)), 0);
+        }
+    }
+
+    // The raised thresholds follow the binary image's smallest step and never lower a setting.
+    void speckFreeThresholdsFollowTheSmallestStep()
+    {
+        EdgeOptions o;
+        QCOMPARE(speckFreeCannyOptions(o).cannyLow, 4 * 255 - 1);
+        QCOMPARE(speckFreeCannyOptions(o).cannyHigh, 4 * 255 - 1);
+        o.whiteLevel = 128;  // steps 128 (white / black) and 127 (green / white)
+        QCOMPARE(speckFreeCannyOptions(o).cannyHigh, 4 * 127 - 1);
+        o.whiteLevel = 0;
+        o.input = EdgeInput::Gray;  // an ordinary Canny on the grayscale: as set
+        QCOMPARE(speckFreeCannyOptions(o).cannyHigh, o.cannyHigh);
+        o.input = EdgeInput::Binary;
+        o.dropSpecks = false;
+        QCOMPARE(speckFreeCannyOptions(o).cannyLow, o.cannyLow);
     }
 
     // edges.input: gray finds the ball on a frame whose colours match no class (no segmentation).
@@ -156,9 +204,11 @@ private slots:
         cv::line(frame, pointAt(c, 90, 200), pointAt(c, 220, 235), kWhite, 3);
         const cv::Point2d speck = pointAt(c, 150, 300);  // one non-green pixel (sensor noise)
         frame.at<cv::Vec3b>(int(speck.y), int(speck.x)) = cv::Vec3b(235, 235, 235);
+        c.edges.dropSpecks = false;  // the thresholds as set
         const EdgeStages thesis(c, frame);  // the thesis' 60 / 180
         QVERIFY(cv::countNonZero(thesis.edges) > 200);
-        c.edges = EdgeOptions{low, high};
+        c.edges.cannyLow = low;
+        c.edges.cannyHigh = high;
         const EdgeStages other(c, frame);
         cv::Mat changed = other.edges != thesis.edges;
         const int all = cv::countNonZero(changed);

@@ -1,5 +1,5 @@
-// validation.line_arms and validation.line_blob_min_pct (issue 9, false positives): a junction
-// of far lines, or a line's end, is a round blob of line colour of a far ball's size and passes
+// validation.line_arms (with line_arms_pale), validation.line_blob_min_pct and
+// line_blob_armless_min_pct (issue 9, false positives): a junction of far lines, or a line's end, is a round blob of line colour of a far ball's size and passes
 // the shape tests; the lines leaving it like spokes give it away. A ball beside a line, on a
 // line, at a line's end, or a white ball alone, still passes.
 #include "DrawnCandidate.h"
@@ -132,6 +132,92 @@ private slots:
         c.validation.lineBlobMinPct = 100.0;
         const BallCandidate cand = validate(c, frame, p);
         QVERIFY2(cand.rejected == RejectReason::None, qPrintable(verdict(cand)));
+    }
+
+    // validation.line_blob_armless_min_pct: a line's end whose line runs on behind a rod has no arm
+    // (the rod ends it) and is rejected as a line blob; a white ball with dark panels there, and
+    // the same blob in the open (the penalty spot, a plain white ball), pass. Off, the cut line
+    // end passes.
+    void lineEndCutByARodIsALineBlob()
+    {
+        Config c;
+        const double distance = distanceForRadius(c, 5.5);
+        const cv::Point2d q = pointAt(c, distance, 200);
+        const cv::Point p(int(std::lround(q.x)), int(std::lround(q.y)));
+        const double r = expectedRadius(c, distance);
+        const cv::Point2d dir(std::cos(120.0 * M_PI / 180.0), std::sin(120.0 * M_PI / 180.0));
+        auto scene = [&](bool panels, bool rod) {
+            cv::Mat frame = greenField(c);
+            cv::circle(frame, p, int(std::lround(r)), kWhite, cv::FILLED);
+            if (rod) cv::line(frame, p, cv::Point(cv::Point2d(p) + dir * 5.0 * r), kWhite, 2);
+            cv::GaussianBlur(frame, frame, cv::Size(5, 5), 0.8);
+            if (panels) {  // two dark panels, 2x2 px each (about 10 % of the disc)
+                cv::rectangle(frame, p + cv::Point(-2, -2), p + cv::Point(-1, -1), kBlack, cv::FILLED);
+                cv::rectangle(frame, p + cv::Point(1, 1), p + cv::Point(2, 2), kBlack, cv::FILLED);
+            }
+            return frame;
+        };
+        // The rod: a masked band across the line, 1.3 expected radii out.
+        cv::Mat rodMask(c.geometry.imageHeight, c.geometry.imageWidth, CV_8UC1, cv::Scalar(255));
+        const cv::Point2d across(-dir.y, dir.x);
+        const cv::Point2d at = cv::Point2d(p) + dir * (1.3 * r + 2.0);
+        cv::line(rodMask, cv::Point(at - across * 4.0 * r), cv::Point(at + across * 4.0 * r), cv::Scalar(0), 4);
+        Config masked = c;
+        masked.mask = rodMask;
+
+        const BallCandidate cut = validate(masked, scene(false, true), p);
+        QVERIFY2(cut.rejected == RejectReason::LineBlob, qPrintable(verdict(cut)));
+        const BallCandidate panelled = validate(masked, scene(true, true), p);
+        QVERIFY2(panelled.rejected == RejectReason::None, qPrintable(verdict(panelled)));
+        Config panelsIgnored = masked;  // it is the panels that save it
+        panelsIgnored.validation.lineBlobArmlessMaxPanelPct = 100.0;
+        const BallCandidate unsaved = validate(panelsIgnored, scene(true, true), p);
+        QVERIFY2(unsaved.rejected == RejectReason::LineBlob, qPrintable(verdict(unsaved)));
+        const BallCandidate open = validate(c, scene(false, false), p);
+        QVERIFY2(open.rejected == RejectReason::None, qPrintable(verdict(open)));
+        // cut_reach 0 judges every armless blob: the open one too.
+        Config everywhere = c;
+        everywhere.validation.lineBlobCutReach = 0.0;
+        const BallCandidate judged = validate(everywhere, scene(false, false), p);
+        QVERIFY2(judged.rejected == RejectReason::LineBlob, qPrintable(verdict(judged)));
+        masked.validation.lineBlobArmlessMinPct = 100.0;
+        const BallCandidate off = validate(masked, scene(false, true), p);
+        QVERIFY2(off.rejected == RejectReason::None, qPrintable("off: " + verdict(off)));
+    }
+
+    // validation.line_arms_pale: in dim light a junction of far lines is grey, below the line
+    // class (V 120 on a carpet of V 70: no class at all), so by class alone it has no arm and
+    // passes; its pale pixels give its two arms back. An orange ball on the same carpet passes.
+    void dimJunctionHasPaleArms()
+    {
+        Config c;
+        const double distance = distanceForRadius(c, 5.5);
+        const cv::Point2d q = pointAt(c, distance, 200);
+        const cv::Point p(int(std::lround(q.x)), int(std::lround(q.y)));
+        const double r = expectedRadius(c, distance);
+        const cv::Scalar dimGreen(25, 70, 25);
+        const cv::Scalar grey(120, 120, 120);
+        auto scene = [&](bool junction) {
+            cv::Mat frame(c.geometry.imageHeight, c.geometry.imageWidth, CV_8UC3, dimGreen);
+            if (junction) {
+                cv::circle(frame, p, int(std::lround(r)), grey, cv::FILLED);
+                for (double deg : {100.0, 150.0}) {
+                    const cv::Point2d dir(std::cos(deg * M_PI / 180.0), std::sin(deg * M_PI / 180.0));
+                    cv::line(frame, p, cv::Point(cv::Point2d(p) + dir * 5.0 * r), grey, 2);
+                }
+            } else {
+                cv::circle(frame, p, int(std::lround(r)), kOrange, cv::FILLED);
+            }
+            cv::GaussianBlur(frame, frame, cv::Size(5, 5), 0.8);
+            return frame;
+        };
+        const BallCandidate on = validate(c, scene(true), p);
+        QVERIFY2(on.rejected == RejectReason::LineJunction, qPrintable(verdict(on)));
+        const BallCandidate ball = validate(c, scene(false), p);
+        QVERIFY2(ball.rejected == RejectReason::None, qPrintable(verdict(ball)));
+        c.validation.lineArmsPale = false;
+        const BallCandidate off = validate(c, scene(true), p);
+        QVERIFY2(off.rejected == RejectReason::None, qPrintable("off: " + verdict(off)));
     }
 
     // Larger candidates than line_arms_max_radius_px are not judged: the V passes when the limit

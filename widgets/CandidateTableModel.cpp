@@ -86,6 +86,7 @@ int CandidateTableModel::failingColumn(RejectReason reason)
     case RejectReason::RunsOn: return RunOnColumn;
     case RejectReason::None:
     case RejectReason::OutsideArea:
+    case RejectReason::LineBlob:
     case RejectReason::LineJunction:  // no score of its own: the result's tooltip says why
     case RejectReason::NotChosen: return -1;
     }
@@ -237,8 +238,9 @@ QString CandidateTableModel::columnToolTip(int column) const
             .arg(number(t.maxRunOnPct, 1));
     case ResultColumn:
         return tr("\"accepted\", or the first test that rejected the candidate: too far to validate, then the thesis' "
-                  "non-green, non-black, circularity, then run-on and \"line junction\" (field lines leave it like "
-                  "spokes, validation.line_arms); \"valid, not chosen\": it passed, but another candidate scored higher.");
+                  "non-green, non-black, circularity, then run-on, \"line junction\" (field lines leave it like "
+                  "spokes, validation.line_arms) and \"line blob\" (no arm, mostly line colour inside: a line's end or "
+                  "the penalty spot); \"valid, not chosen\": it passed, but another candidate scored higher.");
     }
     return {};
 }

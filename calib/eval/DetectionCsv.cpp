@@ -15,7 +15,8 @@ const BallCandidate* decisiveCandidate(const PipelineResult& r)
         const double s = c.scores.nonGreenPct + c.scores.nonBlackPct + c.scores.circularityPct;
         switch (c.rejected) {
         case RejectReason::RunsOn:
-        case RejectReason::LineJunction: return 4000 + s;
+        case RejectReason::LineJunction:
+        case RejectReason::LineBlob: return 4000 + s;
         case RejectReason::Circularity: return 3000 + s;
         case RejectReason::NonBlack: return 2000 + s;
         case RejectReason::NonGreen: return 1000 + s;

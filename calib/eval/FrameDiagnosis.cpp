@@ -58,7 +58,8 @@ int progressOf(const BallCandidate& c, const ValidationOptions& v)
     case RejectReason::NonBlack: return 3;
     case RejectReason::Circularity: return c.scores.circularityPct >= v.minCircularityPct ? 5 : 4;
     case RejectReason::RunsOn:
-    case RejectReason::LineJunction: return 6;  // the last shape tests: a miss there "runs on"
+    case RejectReason::LineJunction:
+    case RejectReason::LineBlob: return 6;  // the last shape tests: a miss there "runs on"
     case RejectReason::NotChosen: return 7;
     case RejectReason::None: return 8;
     }

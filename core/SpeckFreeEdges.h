@@ -1,0 +1,19 @@
+#pragma once
+// Canny thresholds that keep every border of the binary image and drop the rings around its
+// one-pixel specks. On a two-level image the 3x3 Sobel's L1 gradient comes in multiples of the
+// step: a straight border gives 4 steps, the pixels around an isolated speck at most 2 (3 at its
+// corners, with the other axis adding less than one more). In dim light the black class freckles
+// the carpet with such specks, and each speck's ring of edges votes like a tiny ball.
+#include "core/Edges.h"
+
+namespace omnitune {
+
+// The smallest step between the binary image's levels (255, white_level rounded as makeBinary
+// does, 0), in grey levels.
+int binaryStep(int whiteLevel);
+
+// The Canny options the front end uses: `options` as set, or with drop_specks on the binary
+// input both thresholds raised to 4 x binaryStep - 1 (never lowered).
+EdgeOptions speckFreeCannyOptions(const EdgeOptions& options);
+
+}  // namespace omnitune
