@@ -1,8 +1,8 @@
 #pragma once
 // Canny thresholds that keep every border of the binary image and drop the rings around its
 // one-pixel specks. On a two-level image the 3x3 Sobel's L1 gradient comes in multiples of the
-// step: a straight border gives 4 steps, the pixels around an isolated speck at most 2 (3 at its
-// corners, with the other axis adding less than one more). In dim light the black class freckles
+// step: a straight border gives 4 steps, each pixel around an isolated speck 2 (beside it: 2 on one
+// axis; diagonal to it: 1 on each). In dim light the black class freckles
 // the carpet with such specks, and each speck's ring of edges votes like a tiny ball.
 #include "core/Edges.h"
 

@@ -536,25 +536,27 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
         const PaleLine pale = paleLineAround(colour, classes, geometry, roles, c, options);
         const LineArms arms = lineArmsAround(classes, geometry, roles, c.x, c.y, radius, options.lineArmsReach,
                                              options.lineArmsLateralPx, pale);
-        const double blobMinPct = arms.count >= 1 ? options.lineBlobMinPct : options.lineBlobArmlessMinPct;
-        bool lineBlob = false;
-        if (blobMinPct < 100.0) {
-            const DiscShares disc = discShares(classes, geometry, roles, c.x, c.y, options.lineBlobDisc * c.expectedRadiusPx, pale);
-            lineBlob = disc.linePct >= blobMinPct;
-            if (lineBlob && arms.count == 0) {
-                // Without an arm: a blob whose line runs on behind a rod, our body or the rim (its arm
-                // ended there), unless it shows a ball's panels. One in the open (the penalty spot, a
-                // white ball) passes.
-                const bool cut = options.lineBlobCutReach <= 0.0 ||
-                                 discShares(classes, geometry, roles, c.x, c.y, options.lineBlobCutReach * c.expectedRadiusPx)
-                                         .unusedPct > 0.0;
-                lineBlob = cut && disc.panelPct <= options.lineBlobArmlessMaxPanelPct;
-            }
-        }
-        if (arms.junction(options.lineArmsMaxAngleDeg) || (lineBlob && arms.count >= 1))
+        if (arms.junction(options.lineArmsMaxAngleDeg)) {
             c.rejected = RejectReason::LineJunction;
-        else if (lineBlob)
-            c.rejected = RejectReason::LineBlob;
+            return;
+        }
+        const bool armed = arms.count >= 1;
+        const double blobMinPct = armed ? options.lineBlobMinPct : options.lineBlobArmlessMinPct;
+        if (blobMinPct >= 100.0) return;
+        const DiscShares disc = discShares(classes, geometry, roles, c.x, c.y, options.lineBlobDisc * c.expectedRadiusPx, pale);
+        if (disc.linePct < blobMinPct) return;
+        if (armed) {
+            c.rejected = RejectReason::LineJunction;
+            return;
+        }
+        // Without an arm: a blob whose line runs on behind a rod, our body or the rim (its arm ended
+        // there), unless it shows a ball's panels. One in the open (the penalty spot, a white ball)
+        // passes.
+        if (disc.panelPct > options.lineBlobArmlessMaxPanelPct) return;
+        const bool cut = options.lineBlobCutReach <= 0.0 ||
+                         discShares(classes, geometry, roles, c.x, c.y, options.lineBlobCutReach * c.expectedRadiusPx)
+                                 .unusedPct > 0.0;
+        if (cut) c.rejected = RejectReason::LineBlob;
     }
 }
 
