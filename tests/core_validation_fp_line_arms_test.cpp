@@ -27,13 +27,25 @@ double distanceForRadius(const Config& c, double radius)
     return d;
 }
 
-// Draws the scene around a point of the far ring; returns the candidate's centre.
-cv::Point drawScene(cv::Mat& frame, const Config& c, Scene scene)
+// Where every scene is drawn: a pixel of the far ring where the ball model expects 5.5 px, and
+// the radius it expects there.
+struct FarSpot {
+    cv::Point p;
+    double r = 0.0;
+};
+FarSpot farSpot(const Config& c)
 {
     const double distance = distanceForRadius(c, 5.5);
     const cv::Point2d q = pointAt(c, distance, 200);
-    const cv::Point p(int(std::lround(q.x)), int(std::lround(q.y)));
-    const double r = expectedRadius(c, distance);
+    return {cv::Point(int(std::lround(q.x)), int(std::lround(q.y))), expectedRadius(c, distance)};
+}
+
+// Draws the scene around a point of the far ring; returns the candidate's centre.
+cv::Point drawScene(cv::Mat& frame, const Config& c, Scene scene)
+{
+    const FarSpot spot = farSpot(c);  // named members, not a structured binding: lambdas capture them
+    const cv::Point p = spot.p;
+    const double r = spot.r;
     const int ri = int(std::lround(r));
     const int lineWidth = 2;
     auto lineAt = [&](double angleDeg, double from, double to) {
@@ -141,10 +153,9 @@ private slots:
     void lineEndCutByARodIsALineBlob()
     {
         Config c;
-        const double distance = distanceForRadius(c, 5.5);
-        const cv::Point2d q = pointAt(c, distance, 200);
-        const cv::Point p(int(std::lround(q.x)), int(std::lround(q.y)));
-        const double r = expectedRadius(c, distance);
+        const FarSpot spot = farSpot(c);  // named members, not a structured binding: lambdas capture them
+    const cv::Point p = spot.p;
+    const double r = spot.r;
         const cv::Point2d dir(std::cos(120.0 * M_PI / 180.0), std::sin(120.0 * M_PI / 180.0));
         auto scene = [&](bool panels, bool rod) {
             cv::Mat frame = greenField(c);
@@ -191,10 +202,9 @@ private slots:
     void dimJunctionHasPaleArms()
     {
         Config c;
-        const double distance = distanceForRadius(c, 5.5);
-        const cv::Point2d q = pointAt(c, distance, 200);
-        const cv::Point p(int(std::lround(q.x)), int(std::lround(q.y)));
-        const double r = expectedRadius(c, distance);
+        const FarSpot spot = farSpot(c);  // named members, not a structured binding: lambdas capture them
+    const cv::Point p = spot.p;
+    const double r = spot.r;
         const cv::Scalar dimGreen(25, 70, 25);
         const cv::Scalar grey(120, 120, 120);
         auto scene = [&](bool junction) {
