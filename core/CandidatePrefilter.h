@@ -31,8 +31,9 @@ struct CandidatePrefilter {
     double minNonBlackPct = 0.0;  // %; 0: no test (needs the classes image)
     ColourRoles roles;            // which class ids are black
     double maxReachPx = std::numeric_limits<double>::infinity();  // distance + expected radius, px
-    // A listed refusal whose expected radius is below this (validation.min_radius_px) is named
-    // "too small", validation's first test, so the table gives the reason validation would.
+    // A listed colour refusal whose expected radius is below this (validation.min_radius_px) is
+    // named "too small", validation's first test, so the table gives the reason validation would;
+    // a rim refusal keeps "outside area", which validation checks before size.
     double tooSmallBelowPx = 0.0;
 
     bool active() const

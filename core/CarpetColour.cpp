@@ -1,6 +1,7 @@
 #include "core/CarpetColour.h"
 
 #include "core/Geometry.h"
+#include "core/Pi.h"
 
 #include <algorithm>
 #include <array>
@@ -9,8 +10,6 @@
 namespace omnitune {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Hue h (0..179) as a point on the unit circle: the mean of these is the circular mean, so a
 // red carpet whose hues straddle 0 / 179 averages to about 0, not to cyan's 90.

@@ -27,7 +27,7 @@ void makeBinary(const cv::Mat& classes, const Geometry& geometry, cv::Mat& binar
     CV_Assert(classes.type() == CV_8UC1);
     binary.create(classes.size(), CV_8UC1);
     fillBytes(binary, 255);
-    const auto whiteOut = std::uint8_t(whiteLevel & 0xF0);
+    const auto whiteOut = std::uint8_t(binaryWhiteLevel(whiteLevel));
     std::array<std::uint8_t, 256> level{};  // class id -> binary value
     for (int id = 0; id < 256; ++id)
         level[std::size_t(id)] = roles.field(std::uint8_t(id)) ? 255 : roles.line(std::uint8_t(id)) ? whiteOut : 0;

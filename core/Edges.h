@@ -38,7 +38,11 @@ struct EdgeOptions {
     bool dropSpecks = true;
 };
 
-// Field classes ("green") -> 255, line classes ("white") -> whiteLevel, other classes -> 0,
+// The level makeBinary gives line pixels: white_level rounded down to a multiple of 16, so that the
+// Hough's centre test can read the binary image's low bits as "not green".
+inline int binaryWhiteLevel(int whiteLevel) { return whiteLevel & 0xF0; }
+
+// Field classes ("green") -> 255, line classes ("white") -> binaryWhiteLevel, other classes -> 0,
 // pixels the geometry does not use -> 255 so that the robot body and the mirror rim make no edges.
 void makeBinary(const cv::Mat& classes, const Geometry& geometry, cv::Mat& binary, int whiteLevel = 0,
                 const ColourRoles& roles = defaultColourRoles());

@@ -3,6 +3,7 @@
 #include "core/BallModel.h"
 #include "core/Geometry.h"
 #include "core/OpenCvHough.h"
+#include "core/Pi.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,6 @@ namespace omnitune {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kDirections = 16;  // sampled image angles, for a per-direction ball model
 
 struct RadiusRange {

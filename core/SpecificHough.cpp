@@ -287,7 +287,10 @@ bool SpecificHough::passesPrefilter(const cv::Mat& binary, int x, int y, std::in
     ++stats_.prefiltered;
     if (list && dropped_.size() < dropped_.capacity()) {
         BallCandidate c = candidateAt(x, y, sum, source);
-        c.rejected = c.expectedRadiusPx < prefilter_.tooSmallBelowPx ? RejectReason::TooSmall : why;
+        // A colour refusal is named as validation would name it; a rim refusal stays one, as there.
+        c.rejected = why != RejectReason::OutsideArea && c.expectedRadiusPx < prefilter_.tooSmallBelowPx
+                         ? RejectReason::TooSmall
+                         : why;
         c.scores.nonGreenPct = shares.nonGreenPct;
         c.scores.nonBlackPct = shares.nonBlackPct;
         dropped_.push_back(c);

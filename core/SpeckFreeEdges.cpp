@@ -6,7 +6,7 @@ namespace omnitune {
 
 int binaryStep(int whiteLevel)
 {
-    const int white = whiteLevel & 0xF0;  // as makeBinary uses it
+    const int white = binaryWhiteLevel(whiteLevel);
     return white == 0 ? 255 : std::min(white, 255 - white);
 }
 

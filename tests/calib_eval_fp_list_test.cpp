@@ -5,6 +5,7 @@
 #include "calib/eval/FalsePositiveList.h"
 #include "calib/eval/QualityMatrix.h"
 #include "calib/eval/QualityRun.h"
+#include "PlainFile.h"
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -92,12 +93,9 @@ private slots:
     void unwritableFolderIsNamed()
     {
         QTemporaryDir dir;
-        const std::string file = (std::filesystem::path(dir.path().toStdString()) / "plain-file").string();
-        QFile f(QString::fromStdString(file));
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.close();
-        QualityRun run;
-        const auto error = writeFalsePositiveCrops(run, {}, file + "/sub");
+        const std::string file = makePlainFile(dir);
+        QVERIFY(!file.empty());
+        const auto error = writeFalsePositiveCrops(QualityRun{}, {}, file + "/sub");
         QVERIFY(error);
         QVERIFY2(error->find(file) != std::string::npos, error->c_str());
     }

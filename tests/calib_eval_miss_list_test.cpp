@@ -5,6 +5,7 @@
 #include "calib/eval/MissList.h"
 #include "calib/eval/QualityMatrix.h"
 #include "calib/eval/QualityRun.h"
+#include "PlainFile.h"
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -116,10 +117,8 @@ private slots:
     void unwritableFolderIsNamed()
     {
         QTemporaryDir dir;
-        const std::string file = (std::filesystem::path(dir.path().toStdString()) / "plain-file").string();
-        QFile f(QString::fromStdString(file));
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.close();
+        const std::string file = makePlainFile(dir);
+        QVERIFY(!file.empty());
         const auto error = writeMissCrops(QualityRun{}, {}, file + "/sub");
         QVERIFY(error);
         QVERIFY2(error->find(file) != std::string::npos, error->c_str());

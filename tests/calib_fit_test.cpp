@@ -12,6 +12,7 @@
 #include "calib/session/SessionReader.h"
 #include "calib/sim/SceneSimulator.h"
 #include "core/ConfigParser.h"
+#include "core/Pi.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -27,7 +28,6 @@ Q_DECLARE_METATYPE(cv::Point2d)
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 const std::string kDemo = std::string(OMNITUNE_SOURCE_DIR) + "/sessions/demo";
 
 // A mirror camera frame drawn from scratch: dark housing outside a disc of radius `rim` (edge

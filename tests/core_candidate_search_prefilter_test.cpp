@@ -135,6 +135,34 @@ private slots:
         QVERIFY(!candidatePrefilterFor(c).active());
     }
 
+    // A listed refusal gives the reason validation would: "too small" for a small ball refused
+    // on colour, but "outside area" for one the rim refuses (validation checks the rim first).
+    void aRimRefusalKeepsItsReason()
+    {
+        Config c;
+        c.algorithm = Algorithm::Specific;
+        c.hough.blobSeeds = false;
+        c.validation.rimTest = false;
+        c.validation.rimMarginPx = 8;  // the prefilter's reach ends 8 px inside the rim
+        const double d = c.geometry.outerRadius - 10;
+        QVERIFY(d + expectedRadius(c, d) > c.geometry.outerRadius - c.validation.rimMarginPx);
+        c.validation.minRadiusPx = expectedRadius(c, d) + 1;  // and too small for validation
+        cv::Mat frame = greenField(c);
+        const cv::Point ball = drawBall(frame, c, d, 30);
+        const EdgeStages s(c, frame);
+        SpecificHough hough(c.hough, s.geometry, s.ball, candidatePrefilterFor(c));
+        std::vector<BallCandidate> cands;
+        hough.process(s.edges, s.binary, cands, s.classes);
+        QVERIFY(hough.stats().prefilterListed > 0);
+        bool listed = false;
+        for (const auto& k : cands) {
+            if (!near(k.x, k.y, ball, 3.0)) continue;
+            QCOMPARE(k.rejected, RejectReason::OutsideArea);
+            listed = true;
+        }
+        QVERIFY(listed);
+    }
+
     // The shares count processed pixels only, by colour class.
     void squareSharesCountProcessedPixels()
     {

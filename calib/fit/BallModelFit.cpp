@@ -3,6 +3,7 @@
 #include "calib/fit/FitText.h"
 #include "calib/fit/Polynomial.h"
 #include "calib/fit/Residuals.h"
+#include "core/Pi.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,8 +35,6 @@ std::vector<BallSample> ballSamplesFromDetections(const std::vector<FrameOutcome
 }
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Widest gap (deg) between the angles of the samples that have one.
 double widestGapDeg(const std::vector<BallSample>& samples)

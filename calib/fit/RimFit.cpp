@@ -2,6 +2,7 @@
 
 #include "calib/fit/FitText.h"
 #include "calib/fit/GrayFrames.h"
+#include "core/Pi.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -14,7 +15,6 @@ namespace omnitune {
 namespace {
 
 constexpr double kStepPx = 0.5;  // sampling step along a ray
-constexpr double kPi = 3.14159265358979323846;
 
 float sampleAt(const cv::Mat& img, double x, double y)
 {

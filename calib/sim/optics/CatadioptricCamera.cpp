@@ -1,5 +1,7 @@
 #include "calib/sim/optics/CatadioptricCamera.h"
 
+#include "core/Pi.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,8 +10,6 @@
 namespace omnitune {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Where the camera ray with horizontal/vertical ratio `tanTheta` meets the mirror: the radius r
 // with r / tanTheta = vertex + h(r). Returns a negative value when it passes beyond the rim.

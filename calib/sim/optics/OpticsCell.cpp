@@ -2,6 +2,7 @@
 
 #include "calib/sim/optics/OpticsMeasurement.h"
 #include "core/ConfigWriter.h"
+#include "core/Pi.h"
 
 #include <cmath>
 #include <cstdint>
@@ -60,8 +61,6 @@ std::string opticsCellName(const OpticsCell& cell)
 }
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // FNV-1a: a hash that is the same on every build, so a cell's scenes do not depend on the library.
 std::uint64_t stableHash(const std::string& text)

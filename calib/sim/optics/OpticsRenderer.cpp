@@ -1,5 +1,7 @@
 #include "calib/sim/optics/OpticsRenderer.h"
 
+#include "core/Pi.h"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -14,7 +16,6 @@ namespace omnitune {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kLineStep = 0.02;    // m, line-distance grid
 constexpr double kCarpetStep = 0.10;  // m, carpet-shade grid
