@@ -399,11 +399,20 @@ std::vector<ConfigKey> buildSchema()
                        "Per-ring search: circles of plausible radius validated per ring, strongest first (replaces max_circles)",
                        [](auto& c) -> auto& { return c.opencvHough.bandCircles; }));
     s.push_back(doubleKey("opencv_hough.band_dp", "ratio", 1, 4, false,
-                          "Per-ring search: inverse accumulator resolution (replaces dp; 1: the image's, which a 4 px far ball needs)",
+                          "Per-ring search: inverse accumulator resolution (replaces dp; 1: the image's, which the farthest, smallest balls need)",
                           [](auto& c) -> auto& { return c.opencvHough.bandDp; }));
     s.push_back(doubleKey("opencv_hough.band_acc_threshold", "votes", 1, 1000, false,
                           "Per-ring search: accumulator votes a circle centre needs at least (replaces acc_threshold)",
                           [](auto& c) -> auto& { return c.opencvHough.bandAccThreshold; }));
+    s.push_back(intKey("opencv_hough.mask_fill_px", "px", 0, 50, false,
+                       "Masked pixels of the ring (support rods) within this distance of a non-green pixel are non-green in "
+                       "HoughCircles' input, so a ball behind a rod is one disc again; a rod across bare carpet stays green. "
+                       "0: masked pixels are green, a ball behind a rod is cut in two (thesis)",
+                       [](auto& c) -> auto& { return c.opencvHough.maskFillPx; }));
+    s.push_back(boolKey("opencv_hough.masked_centres", false,
+                        "A circle centred on a masked pixel of the ring (a ball behind a support rod) is validated on its visible "
+                        "part, as hough.masked_centres does for the specific search; off: refused as outside the area (thesis)",
+                        [](auto& c) -> auto& { return c.opencvHough.maskedCentres; }));
 
     // validation
     s.push_back(doubleKey("validation.min_non_green_pct", "%", 0, 100, true, "Non-green share the ball square needs; lower lets carpet patches through",

@@ -16,6 +16,8 @@ Geometry::Geometry(const GeometryOptions& options, const cv::Mat& mask) : option
     CV_Assert(w > 0 && h > 0);
     CV_Assert(mask.empty() || (mask.cols == w && mask.rows == h && mask.type() == CV_8UC1));
     used_.create(h, w, CV_8UC1);
+    cv::Mat masked(h, w, CV_8UC1, cv::Scalar(0));
+    bool anyMasked = false;
     distance_.create(h, w, CV_32FC1);
     const double inner2 = options.innerRadius * options.innerRadius;
     const double outer2 = options.outerRadius * options.outerRadius;
@@ -31,6 +33,10 @@ Geometry::Geometry(const GeometryOptions& options, const cv::Mat& mask) : option
             dist[x] = float(std::sqrt(d2));
             const bool inRing = d2 >= inner2 && d2 <= outer2;
             used[x] = (inRing && (!m || m[x] != 0)) ? 255 : 0;
+            if (inRing && !used[x]) {
+                masked.at<std::uint8_t>(y, x) = 255;
+                anyMasked = true;
+            }
             if (used[x]) {
                 usedPixels_.push_back(y * w + x);
                 if (spanStart < 0) spanStart = x;
@@ -41,6 +47,7 @@ Geometry::Geometry(const GeometryOptions& options, const cv::Mat& mask) : option
         }
         if (spanStart >= 0) spans_.push_back({y, spanStart, w});
     }
+    if (anyMasked) maskedInRing_ = masked;
     cv::erode(used_, edgeMask_, cv::Mat(), cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
 }
 

@@ -41,6 +41,9 @@ public:
     // mask is no edge of the scene: a line cut off by the mirror rim would otherwise close into
     // a small blob that looks like a far ball.
     const cv::Mat& edgeMask() const { return edgeMask_; }
+    // 255 where a pixel of the ring is masked (a support rod, a reflection), 0 elsewhere; empty
+    // when no pixel of the ring is.
+    const cv::Mat& maskedInRing() const { return maskedInRing_; }
     // Distance of each pixel to the robot centre in px (CV_32FC1).
     const cv::Mat& distance() const { return distance_; }
     float distanceAt(int x, int y) const { return distance_.at<float>(y, x); }
@@ -53,6 +56,7 @@ private:
     GeometryOptions options_;
     cv::Mat used_;
     cv::Mat edgeMask_;
+    cv::Mat maskedInRing_;
     cv::Mat distance_;
     std::vector<RowSpan> spans_;
     std::vector<int> usedPixels_;

@@ -35,20 +35,34 @@ cv::Point2d nonGreenCentroid(const cv::Mat& binary, cv::Point2d p, double radius
     return n > 0 ? cv::Point2d(sx / n, sy / n) : p;
 }
 
+// Whether a circle centre at (x, y) lies where validation can judge it: a processed pixel, or with
+// masked_centres a masked one inside the ring.
+bool centreJudged(const Geometry& geometry, const OpenCvHoughOptions& options, int x, int y)
+{
+    const cv::Size size = geometry.imageSize();
+    if (x < 0 || y < 0 || x >= size.width || y >= size.height) return false;
+    if (geometry.isUsed(x, y)) return true;
+    const cv::Mat& masked = geometry.maskedInRing();
+    return options.maskedCentres && !masked.empty() && masked.at<std::uint8_t>(y, x) != 0;
+}
+
 }  // namespace
 
 void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& options, const Geometry& geometry,
                           const BallModel& ball, std::vector<BallCandidate>& candidates)
 {
     CV_Assert(binary.type() == CV_8UC1 && binary.size() == geometry.imageSize());
+    // The circles and their refined centres come from the filled image; validation still reads
+    // the frame's own classes.
+    const cv::Mat& input = maskFill_.apply(binary, geometry, options.maskFillPx);
     openCvRadiusBands(geometry, ball, options, bands_);
     if (bands_.empty()) {
         circles_.clear();
-        cv::HoughCircles(binary, circles_, cv::HOUGH_GRADIENT, options.dp, options.minDist, options.cannyHigh,
+        cv::HoughCircles(input, circles_, cv::HOUGH_GRADIENT, options.dp, options.minDist, options.cannyHigh,
                          options.accThreshold, options.minRadius, options.maxRadius);
         Pass all;
         all.maxCounted = options.maxCircles;
-        appendCircles(binary, options, geometry, ball, all, candidates);
+        appendCircles(input, options, geometry, ball, all, candidates);
         return;
     }
     if (rings_.size() != bands_.size()) rings_.resize(bands_.size());
@@ -56,14 +70,14 @@ void OpenCvHough::process(const cv::Mat& binary, const OpenCvHoughOptions& optio
         const OpenCvRadiusBand& b = bands_[i];
         if (b.roi.empty()) continue;
         circles_.clear();
-        cv::HoughCircles(ringInput(binary, geometry, i), circles_, cv::HOUGH_GRADIENT, options.bandDp, b.minDist, options.cannyHigh,
+        cv::HoughCircles(ringInput(input, geometry, i), circles_, cv::HOUGH_GRADIENT, options.bandDp, b.minDist, options.cannyHigh,
                          b.accThreshold, b.minRadius, b.maxRadius);
         Pass pass;
         pass.offset = b.roi.tl();
         pass.minDistancePx = b.minDistancePx;
         pass.maxDistancePx = b.maxDistancePx;
         pass.maxCounted = options.bandCircles;
-        appendCircles(binary, options, geometry, ball, pass, candidates);
+        appendCircles(input, options, geometry, ball, pass, candidates);
     }
 }
 
@@ -115,7 +129,7 @@ void OpenCvHough::appendCircles(const cv::Mat& binary, const OpenCvHoughOptions&
         const bool inside = cand.x >= 0 && cand.y >= 0 && cand.x < binary.cols && cand.y < binary.rows;
         cand.distancePx = inside ? geometry.distanceAt(cand.x, cand.y) : 0.0;
         cand.expectedRadiusPx = inside ? expectedRadiusAt(geometry, ball, cand.x, cand.y) : ball.radiusAt(0.0);
-        if (!inside || !geometry.isUsed(cand.x, cand.y))
+        if (!centreJudged(geometry, options, cand.x, cand.y))
             cand.rejected = RejectReason::OutsideArea;
         else if (cand.radiusPx > cand.expectedRadiusPx * options.maxRadiusRatio ||
                  cand.radiusPx < cand.expectedRadiusPx * options.minRadiusRatio)
@@ -125,7 +139,7 @@ void OpenCvHough::appendCircles(const cv::Mat& binary, const OpenCvHoughOptions&
             cv::Point2d p(c[0], c[1]);
             for (int it = 0; it < 3; ++it) p = nonGreenCentroid(binary, p, cand.expectedRadiusPx + 1.0);
             const cv::Point q(int(std::lround(p.x)), int(std::lround(p.y)));
-            if (q.x >= 0 && q.y >= 0 && q.x < binary.cols && q.y < binary.rows && geometry.isUsed(q.x, q.y)) {
+            if (centreJudged(geometry, options, q.x, q.y)) {
                 cand.x = q.x;
                 cand.y = q.y;
                 cand.distancePx = geometry.distanceAt(q.x, q.y);
