@@ -550,6 +550,24 @@ std::vector<ConfigKey> buildSchema()
                           "green_panels: the panels count in the non-green test only when the square's non-green share by colour "
                           "alone (the ball's white) reaches this; a green-and-white ball shows ~55 %, carpet beside a line less",
                           [](auto& c) -> auto& { return c.validation.greenPanelMinOwnPct; }));
+    s.push_back(intKey("validation.recentre_refused", "candidates", 0, 100, false,
+                       "Maxima the prefilter refused on the non-green test (a green-and-white ball's lies on its white half) are "
+                       "moved to the centroid of the pixels around them not of the carpet's colour and validated there, at most "
+                       "this many per frame, strongest first; 0: they stay refused",
+                       [](auto& c) -> auto& { return c.validation.recentreRefused; }));
+    s.push_back(doubleKey("validation.recentre_min_non_green_pct", "%", 0, 100, false,
+                          "recentre_refused: only refusals whose square is at least this non-green by colour class (carpet "
+                          "crossed by a line shows less)",
+                          [](auto& c) -> auto& { return c.validation.recentreMinNonGreenPct; }));
+    s.push_back(doubleKey("validation.recentre_min_panel_pct", "%", 0, 100, false,
+                          "recentre_refused: a moved candidate that passes validation replaces the refusal only when validation's "
+                          "non-green share (green panels counted) is this far above the share by colour class: a line corner "
+                          "or a line end, which the move centres too, has no green of its own",
+                          [](auto& c) -> auto& { return c.validation.recentreMinPanelPct; }));
+    s.push_back(doubleKey("validation.recentre_min_radius_px", "px", 0, 100, false,
+                          "recentre_refused: only refusals whose expected radius is at least this: farther out a line's bend "
+                          "or its end at a rod, centred by the move, looks like a small ball",
+                          [](auto& c) -> auto& { return c.validation.recentreMinRadiusPx; }));
 
     // validation at the mirror rim (issue 9: where the optics matrix's false positives sat)
     s.push_back(boolKey("validation.refuse_at_rim", false,

@@ -1,6 +1,7 @@
 #include "core/OpenCvHough.h"
 
 #include "core/BallModel.h"
+#include "core/DiscCentroid.h"
 #include "core/Geometry.h"
 #include "core/ExpectedRadius.h"
 
@@ -17,22 +18,7 @@ namespace {
 // none.
 cv::Point2d nonGreenCentroid(const cv::Mat& binary, cv::Point2d p, double radius)
 {
-    double sx = 0, sy = 0;
-    long n = 0;
-    const int y0 = std::max(0, int(std::floor(p.y - radius)));
-    const int y1 = std::min(binary.rows - 1, int(std::ceil(p.y + radius)));
-    const int x0 = std::max(0, int(std::floor(p.x - radius)));
-    const int x1 = std::min(binary.cols - 1, int(std::ceil(p.x + radius)));
-    for (int y = y0; y <= y1; ++y) {
-        const std::uint8_t* b = binary.ptr<std::uint8_t>(y);
-        for (int x = x0; x <= x1; ++x) {
-            if (b[x] != 0 || (x - p.x) * (x - p.x) + (y - p.y) * (y - p.y) > radius * radius) continue;
-            sx += x;
-            sy += y;
-            ++n;
-        }
-    }
-    return n > 0 ? cv::Point2d(sx / n, sy / n) : p;
+    return discCentroid(binary.size(), p, radius, [&](int x, int y) { return binary.ptr<std::uint8_t>(y)[x] == 0; });
 }
 
 // Whether a circle centre at (x, y) lies where validation can judge it: a processed pixel, or with

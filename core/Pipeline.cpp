@@ -6,6 +6,7 @@
 #include "core/ConfigSchema.h"
 #include "core/FrameColour.h"
 #include "core/FrontEnd.h"
+#include "core/RefusalRecentre.h"
 #include "core/Stopwatch.h"
 
 #include <opencv2/imgproc.hpp>
@@ -145,6 +146,9 @@ struct Pipeline::Impl {
         // The prefilter's listed refusals come last and are already judged.
         const std::size_t judged = r.candidates.size() - std::size_t(r.hough.prefilterListed);
         if (judged > 0) validateFrom(0, r, judged);
+        if (colour && config.validation.recentreRefused > 0)
+            recentreRefusals(r.candidates, judged, binary, r.classes, edges, geometry(), ball, config.validation, *colour,
+                             frontEnd.roles());
         r.timings.validationMs += clock.lap();
     }
 

@@ -437,15 +437,6 @@ RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& op
     return RejectReason::None;
 }
 
-// The carpet's colour in the ring around a circle of `radius` (carpet_ring_*).
-CarpetColour carpetRingAround(const FrameColour& colour, const cv::Mat& classes, const Geometry& geometry,
-                              const ColourRoles& roles, int x, int y, double radius, const ValidationOptions& options)
-{
-    return CarpetColour::around(colour, classes, geometry, roles, x, y,
-                                options.carpetRingInner * radius + options.carpetRingMarginPx,
-                                options.carpetRingOuter * radius + 2.0 * options.carpetRingMarginPx);
-}
-
 // Pale line pixels for the line-arms test (line_arms_pale): brighter than the carpet around the
 // candidate by pale_line_min_value_ratio. None without the frame's colours or a carpet seen.
 PaleLine paleLineAround(const FrameColour* colour, const cv::Mat& classes, const Geometry& geometry,
@@ -458,6 +449,14 @@ PaleLine paleLineAround(const FrameColour* colour, const cv::Mat& classes, const
 }
 
 }  // namespace
+
+CarpetColour carpetRingAround(const FrameColour& colour, const cv::Mat& classes, const Geometry& geometry,
+                              const ColourRoles& roles, int x, int y, double radius, const ValidationOptions& options)
+{
+    return CarpetColour::around(colour, classes, geometry, roles, x, y,
+                                options.carpetRingInner * radius + options.carpetRingMarginPx,
+                                options.carpetRingOuter * radius + 2.0 * options.carpetRingMarginPx);
+}
 
 ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,
                              const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options,

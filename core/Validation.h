@@ -179,6 +179,18 @@ struct ValidationOptions {
     // %; the square's non-green share by colour alone (the white panels) from which its green
     // panels count in the non-green test: a green-and-white ball shows ~55 %.
     double greenPanelMinOwnPct = 45.0;
+    // Prefilter refusals on the non-green test whose square is at least recentreMinNonGreenPct
+    // non-green by class are moved to the centroid of the pixels around them not of the carpet's
+    // colour and validated there (core/RefusalRecentre.h), up to recentreRefused per frame,
+    // strongest first; 0: they stay refused. One that passes validation there replaces the
+    // refusal only when validation's non-green share is recentreMinPanelPct above the class
+    // share: green panels (or greens not the carpet's) of its own, which a line corner lacks.
+    int recentreRefused = 8;
+    double recentreMinNonGreenPct = 45.0;
+    double recentreMinPanelPct = 15.0;
+    // px; nor for smaller expected radii: in the far ring, a line's bend or its end at a rod,
+    // centred by the move, passes every test (optics matrix seed 2: two false-positive frames).
+    double recentreMinRadiusPx = 8.0;
 
     // With refuseAtRim, a candidate whose expected circle reaches up to rimMaxOverhangPx past
     // outer_radius - rimMarginPx is judged instead of refused when its inward side is closed
@@ -252,6 +264,10 @@ double fitAllowance(double expectedRadiusPx, const ValidationOptions& options);
 void validateCandidate(BallCandidate& candidate, const cv::Mat& classes, const cv::Mat& edges,
                        const Geometry& geometry, const BallModel& ball, const ValidationOptions& options,
                        const FrameColour* colour = nullptr, const ColourRoles& roles = defaultColourRoles());
+
+// The carpet's colour in the ring around a circle of `radius` at (x, y) (carpet_ring_*).
+CarpetColour carpetRingAround(const FrameColour& colour, const cv::Mat& classes, const Geometry& geometry,
+                              const ColourRoles& roles, int x, int y, double radius, const ValidationOptions& options);
 
 // The scores alone, for a circle at (x, y) of the given radius and square side. `squash`: the
 // ball's radial over tangential semi-axis there (1: a circle; used when options.radialSquash).

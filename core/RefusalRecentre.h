@@ -1,0 +1,32 @@
+#pragma once
+// A second look at the prefilter's non-green refusals. A green-and-white ball's Hough maximum
+// lies on its white half (its green panels make no edge against the carpet), so the square there
+// is mostly carpet by class and the prefilter refuses it, and validation would refuse it there
+// too. Moved to the centroid of the pixels around it that are not the carpet's own colour (white
+// panels and green panels of another shade alike), the square is the ball's: validated there, it
+// replaces the refusal when it passes and its green is the ball's (recentre_min_panel_pct).
+#include "core/BallCandidate.h"
+#include "core/ColourClasses.h"
+
+#include <opencv2/core.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace omnitune {
+
+class BallModel;
+class FrameColour;
+class Geometry;
+struct ValidationOptions;
+
+// For the candidates [first, end) refused on the non-green test whose nonGreenPct reaches
+// options.recentreMinNonGreenPct, up to options.recentreRefused of them (strongest first, as
+// listed): three centroid steps, then validation at the new centre; a candidate that passes
+// there takes the refusal's place. Returns how many were tried.
+// `binary` is the front end's (0 = non-green), for the class share.
+int recentreRefusals(std::vector<BallCandidate>& candidates, std::size_t first, const cv::Mat& binary,
+                     const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry, const BallModel& ball,
+                     const ValidationOptions& options, const FrameColour& colour, const ColourRoles& roles);
+
+}  // namespace omnitune
