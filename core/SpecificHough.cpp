@@ -59,8 +59,8 @@ SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry
     weight_.create(size, CV_8UC1);
     maskedWeight_.create(size, CV_8UC1);
     areaIndex_.create(size, CV_8UC1);
-    const double inner = geometry.options().innerRadius;
-    const double outer = geometry.options().outerRadius;
+    // A centre may lie on a masked pixel of the ring (a ball behind a rod): Geometry says which.
+    const cv::Mat& maskedInRing = geometry.maskedInRing();
     for (int y = 0; y < size.height; ++y) {
         int spanStart = -1;
         for (int x = 0; x <= size.width; ++x) {
@@ -68,7 +68,8 @@ SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry
             if (x < size.width) {
                 const double d = geometry.distanceAt(x, y);
                 const bool used = geometry.isUsed(x, y);
-                const bool masked = options.maskedCentres && !used && d >= inner && d <= outer;
+                const bool masked = options.maskedCentres && !maskedInRing.empty() &&
+                                          maskedInRing.at<std::uint8_t>(y, x) != 0;
                 const auto w = std::uint8_t(d < options.nearRobotRadius ? options.nearRobotWeight : 1);
                 weight_.at<std::uint8_t>(y, x) = used ? w : 0;
                 maskedWeight_.at<std::uint8_t>(y, x) = masked ? w : 0;
