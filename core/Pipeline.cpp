@@ -146,9 +146,13 @@ struct Pipeline::Impl {
         // The prefilter's listed refusals come last and are already judged.
         const std::size_t judged = r.candidates.size() - std::size_t(r.hough.prefilterListed);
         if (judged > 0) validateFrom(0, r, judged);
-        if (colour && config.validation.recentreRefused > 0)
-            recentreRefusals(r.candidates, judged, binary, r.classes, edges, geometry(), ball, config.validation, *colour,
-                             frontEnd.roles());
+        if (colour && config.validation.recentreRefused > 0) {
+            const RecentreCounts n = recentreRefusals(r.candidates, judged, binary, r.classes, edges, geometry(), ball,
+                                                      config.validation, *colour, frontEnd.roles());
+            r.hough.recentreTried = n.tried;
+            r.hough.recentred = n.kept;
+            r.hough.prefilterListed -= n.kept;
+        }
         r.timings.validationMs += clock.lap();
     }
 

@@ -32,20 +32,20 @@ cv::Point2d centroidOnce(const FrameColour& colour, const cv::Mat& classes, cons
 
 }  // namespace
 
-int recentreRefusals(std::vector<BallCandidate>& candidates, std::size_t first, const cv::Mat& binary,
+RecentreCounts recentreRefusals(std::vector<BallCandidate>& candidates, std::size_t first, const cv::Mat& binary,
                      const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry, const BallModel& ball,
                      const ValidationOptions& options, const FrameColour& colour, const ColourRoles& roles)
 {
     const auto processed = [&](cv::Point q) {
         return q.x >= 0 && q.y >= 0 && q.x < classes.cols && q.y < classes.rows && geometry.isUsed(q.x, q.y);
     };
-    int tried = 0;
-    for (std::size_t i = first; i < candidates.size() && tried < options.recentreRefused; ++i) {
+    RecentreCounts n;
+    for (std::size_t i = first; i < candidates.size() && n.tried < options.recentreRefused; ++i) {
         const BallCandidate& refused = candidates[i];
         if (refused.rejected != RejectReason::NonGreen || refused.scores.nonGreenPct < options.recentreMinNonGreenPct ||
             refused.expectedRadiusPx < options.recentreMinRadiusPx)
             continue;
-        ++tried;
+        ++n.tried;
         // The carpet is measured once, around the maximum: the ring is wide enough to hold.
         const CarpetColour carpet = options.carpetByColour
                                         ? carpetRingAround(colour, classes, geometry, roles, refused.x, refused.y,
@@ -74,9 +74,13 @@ int recentreRefusals(std::vector<BallCandidate>& candidates, std::size_t first, 
         // the move centres just as well, has no green of its own.
         const int side = ball.squareSizeAt(moved.distancePx, imageAngleAt(geometry, moved.x, moved.y));
         const SquareShares byClass = classSquareShares(binary, classes, geometry.usedMask(), roles, moved.x, moved.y, side);
-        if (moved.scores.nonGreenPct - byClass.nonGreenPct >= options.recentreMinPanelPct) candidates[i] = moved;
+        if (moved.scores.nonGreenPct - byClass.nonGreenPct < options.recentreMinPanelPct) continue;
+        // The refusal at the front, already passed over, takes this slot.
+        const std::size_t front = first + std::size_t(n.kept++);
+        candidates[i] = candidates[front];
+        candidates[front] = moved;
     }
-    return tried;
+    return n;
 }
 
 }  // namespace omnitune

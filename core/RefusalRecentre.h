@@ -20,12 +20,18 @@ class FrameColour;
 class Geometry;
 struct ValidationOptions;
 
+struct RecentreCounts {
+    int tried = 0;  // refusals moved and validated again
+    int kept = 0;   // of them, how many passed and replaced their refusal
+};
+
 // For the candidates [first, end) refused on the non-green test whose nonGreenPct reaches
 // options.recentreMinNonGreenPct, up to options.recentreRefused of them (strongest first, as
-// listed): three centroid steps, then validation at the new centre; a candidate that passes
-// there takes the refusal's place. Returns how many were tried.
-// `binary` is the front end's (0 = non-green), for the class share.
-int recentreRefusals(std::vector<BallCandidate>& candidates, std::size_t first, const cv::Mat& binary,
+// listed): three centroid steps, then validation at the new centre. A candidate that passes
+// there replaces its refusal and moves to the front of [first, end), so that the refusals stay
+// the tail (the window shows the tail's shape as never measured): [first, first + kept) are
+// the kept ones. `binary` is the front end's (0 = non-green), for the class share.
+RecentreCounts recentreRefusals(std::vector<BallCandidate>& candidates, std::size_t first, const cv::Mat& binary,
                      const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry, const BallModel& ball,
                      const ValidationOptions& options, const FrameColour& colour, const ColourRoles& roles);
 

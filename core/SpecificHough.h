@@ -75,6 +75,11 @@ struct HoughStats {
     // after the candidates, rejected with the prefilter's reason and not validated: the table
     // and the miss diagnosis still see what was at the ball.
     int prefilterListed = 0;
+    // Set by the pipeline after validation (validation.recentre_refused): refusals moved to the
+    // centroid of what is not carpet and validated again, and how many of them passed (those
+    // are validated candidates now, and no longer counted in prefilterListed).
+    int recentreTried = 0;
+    int recentred = 0;
 };
 
 class SpecificHough {

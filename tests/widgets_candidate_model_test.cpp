@@ -83,6 +83,7 @@ private slots:
     void thresholdsInTooltips();
     void candidateAccessor();
     void prefilterRefusalsShowNoShape();
+    void recentredRefusalsShowTheirShape();
 };
 
 void CandidateModelTest::resetsUnderModelTester()
@@ -252,6 +253,37 @@ void CandidateModelTest::prefilterRefusalsShowNoShape()
     QVERIFY(model.index(1, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Not validated"));
     QCOMPARE(model.index(2, Col::CircularityColumn).data().toString(), QString("41.7"));
     QVERIFY(!model.index(2, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Not validated"));
+}
+
+// validation.recentre_refused validates a refusal again at a new centre and puts the ones that
+// passed before the refusals still listed: those rows show their measured shape and say how they
+// got there; the listed refusals after them still show none.
+void CandidateModelTest::recentredRefusalsShowTheirShape()
+{
+    PipelineResult r = twoCandidates();
+    r.candidates[0].rejected = RejectReason::NotChosen;
+    BallCandidate moved = makeCandidate(CandidateSource::SpecificHough, 4, 240, 130, RejectReason::None);
+    moved.scores = {81.5, 100.0, 88.34, 0.0};
+    BallCandidate refused = makeCandidate(CandidateSource::SpecificHough, 5, 200, 100, RejectReason::NonGreen);
+    refused.scores = {40.0, 100.0, 0.0, 0.0};
+    r.candidates.insert(r.candidates.begin() + 1, {moved, refused});  // before OpenCV's circle
+    r.hough.prefilterListed = 1;
+    r.hough.recentreTried = 1;
+    r.hough.recentred = 1;
+    r.detection.candidate = 1;
+    CandidateTableModel model;
+    model.setResult(r, Config{});
+    QVERIFY(!model.isRecentred(0));
+    QVERIFY(model.isRecentred(1));
+    QVERIFY(!model.isPrefiltered(1));
+    QVERIFY(model.isPrefiltered(2));
+    QVERIFY(!model.isRecentred(3));
+    QCOMPARE(model.acceptedRow(), 1);
+    QCOMPARE(model.index(1, Col::CircularityColumn).data().toString(), QString("88.3"));
+    QVERIFY(model.index(1, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Recentred"));
+    QVERIFY(!model.index(1, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Not validated"));
+    QCOMPARE(model.index(2, Col::CircularityColumn).data().toString(), QString("-"));
+    QVERIFY(!model.index(2, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Recentred"));
 }
 
 QTEST_MAIN(CandidateModelTest)

@@ -31,12 +31,18 @@ void CandidateTableModel::setResult(const PipelineResult& result, const Config& 
 {
     beginResetModel();
     candidates_ = result.candidates;
-    // The specific search lists its prefilter refusals after its own candidates (OpenCV's
-    // circles, appended later, are never prefiltered).
-    prefiltered_.assign(candidates_.size(), false);
+    // The specific search lists its prefilter refusals after its own candidates, the recentred
+    // ones first (OpenCV's circles, appended later, are never prefiltered).
+    kinds_.assign(candidates_.size(), RowKind::Searched);
     int listed = result.hough.prefilterListed;
-    for (std::size_t i = candidates_.size(); i-- > 0 && listed > 0;)
-        if (candidates_[i].source != CandidateSource::OpenCvHough) prefiltered_[i] = true, --listed;
+    int recentred = result.hough.recentred;
+    for (std::size_t i = candidates_.size(); i-- > 0 && listed + recentred > 0;) {
+        if (candidates_[i].source == CandidateSource::OpenCvHough) continue;
+        if (listed > 0)
+            kinds_[i] = RowKind::Prefiltered, --listed;
+        else
+            kinds_[i] = RowKind::Recentred, --recentred;
+    }
     setThresholds(config);
     endResetModel();
 }
@@ -45,7 +51,7 @@ void CandidateTableModel::clear()
 {
     beginResetModel();
     candidates_.clear();
-    prefiltered_.clear();
+    kinds_.clear();
     endResetModel();
 }
 
@@ -57,10 +63,14 @@ void CandidateTableModel::setThresholds(const Config& config)
                              config.hough.minAccumulator, config.opencvHough.maxRadiusRatio, v.maxRunOnPct};
 }
 
-bool CandidateTableModel::isPrefiltered(int row) const
+CandidateTableModel::RowKind CandidateTableModel::kindOf(int row) const
 {
-    return row >= 0 && std::size_t(row) < prefiltered_.size() && prefiltered_[std::size_t(row)];
+    return row >= 0 && std::size_t(row) < kinds_.size() ? kinds_[std::size_t(row)] : RowKind::Searched;
 }
+
+bool CandidateTableModel::isPrefiltered(int row) const { return kindOf(row) == RowKind::Prefiltered; }
+
+bool CandidateTableModel::isRecentred(int row) const { return kindOf(row) == RowKind::Recentred; }
 
 const BallCandidate& CandidateTableModel::candidate(int row) const
 {
@@ -104,14 +114,15 @@ QVariant CandidateTableModel::data(const QModelIndex& index, int role) const
 {
     if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid)) return {};
     const BallCandidate& c = candidates_[std::size_t(index.row())];
-    const bool prefiltered = isPrefiltered(index.row());
+    const RowKind kind = kindOf(index.row());
+    const bool prefiltered = kind == RowKind::Prefiltered;
     const int column = index.column();
     const bool accepted = c.rejected == RejectReason::None;
     const bool failed = isRejected(c.rejected) && column == failingColumn(c.rejected);
     switch (role) {
     case Qt::DisplayRole: return display(c, column, prefiltered);
     case SortRole: return sortValue(c, column, prefiltered);
-    case Qt::ToolTipRole: return cellToolTip(c, column, prefiltered);
+    case Qt::ToolTipRole: return cellToolTip(c, column, kind);
     case Qt::TextAlignmentRole:
         return column == SourceColumn || column == ResultColumn ? int(Qt::AlignLeft | Qt::AlignVCenter)
                                                                  : int(Qt::AlignRight | Qt::AlignVCenter);
@@ -245,12 +256,16 @@ QString CandidateTableModel::columnToolTip(int column) const
     return {};
 }
 
-QString CandidateTableModel::cellToolTip(const BallCandidate& c, int column, bool prefiltered) const
+QString CandidateTableModel::cellToolTip(const BallCandidate& c, int column, RowKind kind) const
 {
     QString tip = columnToolTip(column);
-    if (prefiltered && (column == CircularityColumn || column == RunOnColumn || column == ResultColumn))
+    if (kind == RowKind::Prefiltered && (column == CircularityColumn || column == RunOnColumn || column == ResultColumn))
         tip += tr("\nNot validated: the candidate prefilter (hough.prefilter_*) refused it on its square's colour or "
                   "at the mirror rim, so its shape was never measured.");
+    if (kind == RowKind::Recentred && (column == SourceColumn || column == ResultColumn))
+        tip += tr("\nRecentred: the prefilter refused the Hough maximum on its square's colour (a green-and-white "
+                  "ball's maximum lies on its white half); moved to the centroid of what is not carpet and validated "
+                  "there (validation.recentre_refused).");
     if (column == RadiusColumn && c.expectedRadiusPx > 0.0)
         tip += tr("\nExpected radius here: %1 px.").arg(number(c.expectedRadiusPx, 1));
     if (!isRejected(c.rejected) || column != failingColumn(c.rejected)) return tip;

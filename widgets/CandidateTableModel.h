@@ -48,6 +48,9 @@ public:
     // square's colour or the rim before validation, so its circularity and run-on were never
     // measured (shown as "-").
     bool isPrefiltered(int row) const;
+    // Whether the row is a prefilter refusal that validation.recentre_refused moved to the
+    // centroid of what is not carpet, where it passed validation.
+    bool isRecentred(int row) const;
     // Row of the accepted ball, -1 when none was accepted.
     int acceptedRow() const;
     // The column holding the score that rejected the candidate, -1 when none does (accepted,
@@ -75,10 +78,14 @@ private:
     QVariant display(const BallCandidate& c, int column, bool prefiltered) const;
     QVariant sortValue(const BallCandidate& c, int column, bool prefiltered) const;
     QString columnToolTip(int column) const;
-    QString cellToolTip(const BallCandidate& c, int column, bool prefiltered) const;
+    // Where a row came from: the searches, or the prefilter's refusals at the end of the specific
+    // search's rows (listed, or recentred and validated).
+    enum class RowKind : unsigned char { Searched, Prefiltered, Recentred };
+    RowKind kindOf(int row) const;
+    QString cellToolTip(const BallCandidate& c, int column, RowKind kind) const;
 
     std::vector<BallCandidate> candidates_;
-    std::vector<bool> prefiltered_;  // per row: isPrefiltered
+    std::vector<RowKind> kinds_;  // per row
     Thresholds thresholds_;
 };
 
