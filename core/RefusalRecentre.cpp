@@ -67,7 +67,8 @@ RecentreCounts recentreRefusals(std::vector<BallCandidate>& candidates, std::siz
         moved.distancePx = geometry.distanceAt(q.x, q.y);
         moved.expectedRadiusPx = expectedRadiusAt(geometry, ball, q.x, q.y);
         moved.rejected = RejectReason::None;
-        validateCandidate(moved, classes, edges, geometry, ball, options, &colour, roles);
+        // Most moves fail on colour again (dim speckle, a line): their shape is not measured.
+        validateCandidate(moved, classes, edges, geometry, ball, options, &colour, roles, true);
         if (moved.rejected != RejectReason::None) continue;
         // Its green must be the ball's: validation's non-green share (panels and greens not the
         // carpet's counted) well above the class share. A white line corner or a line end, which

@@ -416,14 +416,21 @@ void scoreRunOn(const Circle& c, ValidationScores& s)
     if (judged > 0) s.runOnPct = 100.0 * runOn / judged;
 }
 
+// The square's colour tests (thesis' first two): the one failed, or None.
+RejectReason failedColourTest(const ValidationScores& s, const ValidationOptions& options, bool hintKnown)
+{
+    // The known ball colour shows the candidate is neither carpet nor robot.
+    const bool hinted = hintKnown && s.hintPct >= options.ballHintMinPct;
+    if (!hinted && s.nonGreenPct < options.minNonGreenPct) return RejectReason::NonGreen;
+    if (!hinted && s.nonBlackPct < options.minNonBlackPct) return RejectReason::NonBlack;
+    return RejectReason::None;
+}
+
 // The first test a scored candidate fails, in the thesis' order and then ours.
 RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& options, bool hintKnown, double minRadiusPx)
 {
     if (c.expectedRadiusPx < minRadiusPx) return RejectReason::TooSmall;
-    // The known ball colour shows the candidate is neither carpet nor robot.
-    const bool hinted = hintKnown && c.scores.hintPct >= options.ballHintMinPct;
-    if (!hinted && c.scores.nonGreenPct < options.minNonGreenPct) return RejectReason::NonGreen;
-    if (!hinted && c.scores.nonBlackPct < options.minNonBlackPct) return RejectReason::NonBlack;
+    if (const RejectReason colour = failedColourTest(c.scores, options, hintKnown); colour != RejectReason::None) return colour;
     if (c.scores.circularityPct < options.minCircularityPct) return RejectReason::Circularity;
     if (options.circleFit) {
         const double allowance = fitAllowance(c.expectedRadiusPx, options);
@@ -460,7 +467,7 @@ CarpetColour carpetRingAround(const FrameColour& colour, const cv::Mat& classes,
 
 ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,
                              const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options,
-                             const FrameColour* colour, const ColourRoles& roles, double squash)
+                             const FrameColour* colour, const ColourRoles& roles, double squash, bool stopAtColour)
 {
     Circle circle{x, y, radius, classes, edges, geometry, options, colour, roles, roles.idOf(options.ballHint), {}, nullptr};
     const cv::Point2d offset(x - geometry.options().centerX, y - geometry.options().centerY);
@@ -489,6 +496,9 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
     }
     ValidationScores s;
     scoreSquare(circle, squareSide, s);
+    // The same hint test as firstFailedTest's.
+    const bool hintKnown = roles.idOf(options.ballHint) != ColorClass::Unknown;
+    if (stopAtColour && failedColourTest(s, options, hintKnown) != RejectReason::None) return s;
     scoreCircularity(circle, s);
     scoreRunOn(circle, s);
     return s;
@@ -501,12 +511,12 @@ double fitAllowance(double expectedRadiusPx, const ValidationOptions& options)
 
 void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry,
                        const BallModel& ball, const ValidationOptions& options, const FrameColour* colour,
-                       const ColourRoles& roles)
+                       const ColourRoles& roles, bool stopAtColour)
 {
     CV_Assert(classes.type() == CV_8UC1 && edges.type() == CV_8UC1 && classes.size() == edges.size());
     const int square = ball.squareSizeAt(c.distancePx, imageAngleAt(geometry, c.x, c.y));
     c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, square, classes, edges, geometry, options, colour, roles,
-                           ball.squashAt(c.distancePx));
+                           ball.squashAt(c.distancePx), stopAtColour);
     if (c.rejected != RejectReason::None) return;  // already out (outside the area, too large)
     double minRadiusPx = options.minRadiusPx;
     const double overhang = rimOverhangPx(c.distancePx, c.expectedRadiusPx, geometry.options().outerRadius, options.rimMarginPx);

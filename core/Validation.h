@@ -253,17 +253,20 @@ struct ValidationOptions {
     double lineBlobArmlessMaxPanelPct = 3.0;
 };
 
-// Scores one candidate and sets its `rejected` field (first failing test: too small, then the
-// thesis order non-green, non-black, circularity, then our run-on test). `classes` holds colour
-// class ids, `edges` the edge image, `colour` (optional) the frame's colours for carpetByColour,
-// `roles` what the ids are: "green" is every field class, "black" every black class.
 // How far a fitted circle's radius and centre may be off the expected ones (circle_fit):
 // max(fit_max_radius_error_px, fit_max_radius_error x the expected radius).
 double fitAllowance(double expectedRadiusPx, const ValidationOptions& options);
 
+// Scores one candidate and sets its `rejected` field (first failing test: too small, then the
+// thesis order non-green, non-black, circularity, then our run-on test). `classes` holds colour
+// class ids, `edges` the edge image, `colour` (optional) the frame's colours for carpetByColour,
+// `roles` what the ids are: "green" is every field class, "black" every black class.
+// `stopAtColour`: when the square's colour tests fail, the shape is not measured (its scores
+// stay 0; the verdict is the same): for callers that drop what is rejected (the recentre).
 void validateCandidate(BallCandidate& candidate, const cv::Mat& classes, const cv::Mat& edges,
                        const Geometry& geometry, const BallModel& ball, const ValidationOptions& options,
-                       const FrameColour* colour = nullptr, const ColourRoles& roles = defaultColourRoles());
+                       const FrameColour* colour = nullptr, const ColourRoles& roles = defaultColourRoles(),
+                       bool stopAtColour = false);
 
 // The carpet's colour in the ring around a circle of `radius` at (x, y) (carpet_ring_*).
 CarpetColour carpetRingAround(const FrameColour& colour, const cv::Mat& classes, const Geometry& geometry,
@@ -274,6 +277,6 @@ CarpetColour carpetRingAround(const FrameColour& colour, const cv::Mat& classes,
 ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,
                              const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options,
                              const FrameColour* colour = nullptr, const ColourRoles& roles = defaultColourRoles(),
-                             double squash = 1.0);
+                             double squash = 1.0, bool stopAtColour = false);
 
 }  // namespace omnitune

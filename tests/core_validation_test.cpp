@@ -151,6 +151,43 @@ private slots:
                                 .arg(c.scores.circularityPct)));
     }
 
+    // validateCandidate(stopAtColour), the recentre's: a candidate the colour tests refuse
+    // keeps that verdict without its shape being measured; any other is validated in full.
+    void stopAtColourKeepsTheVerdict_data()
+    {
+        QTest::addColumn<int>("shape");
+        QTest::addColumn<RejectReason>("expected");
+        QTest::newRow("ball") << 0 << RejectReason::None;
+        QTest::newRow("black robot") << 1 << RejectReason::NonBlack;
+        QTest::newRow("half circle") << 2 << RejectReason::Circularity;
+    }
+    void stopAtColourKeepsTheVerdict()
+    {
+        QFETCH(int, shape);
+        QFETCH(RejectReason, expected);
+        const Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point2d at = pointAt(c, 150, 120);
+        const cv::Point p(int(std::lround(at.x)), int(std::lround(at.y)));
+        const int ri = int(std::lround(expectedRadius(c, 150)));
+        cv::circle(frame, p, ri, shape == 1 ? kBlack : kOrange, cv::FILLED);
+        if (shape == 2) cv::rectangle(frame, cv::Rect(p.x - 3 * ri, p.y - 3 * ri, 6 * ri, 3 * ri), kOrange, cv::FILLED);
+        const EdgeStages s(c, frame);
+        BallCandidate full = candidateAt(s, p);
+        BallCandidate stopped = full;
+        validateCandidate(full, s.classes, s.edges, s.geometry, s.ball, c.validation);
+        validateCandidate(stopped, s.classes, s.edges, s.geometry, s.ball, c.validation, nullptr, defaultColourRoles(), true);
+        QCOMPARE(full.rejected, expected);
+        QCOMPARE(stopped.rejected, expected);
+        QCOMPARE(stopped.scores.nonBlackPct, full.scores.nonBlackPct);
+        if (expected == RejectReason::NonBlack) {
+            QVERIFY(full.scores.circularityPct > 50.0);  // a round robot: its shape was measured
+            QCOMPARE(stopped.scores.circularityPct, 0.0);
+        } else {
+            QCOMPARE(stopped.scores.circularityPct, full.scores.circularityPct);
+        }
+    }
+
     void halfCircleScoresAboutHalf()
     {
         const BallCandidate c = validateAt(120, 200, [](cv::Mat& f, const Config&, cv::Point p, double r) {
