@@ -83,8 +83,9 @@ struct Circle {
     // (carpetByColour) of the carpet's own green.
     bool carpetAt(cv::Point p) const
     {
-        if (panels && panels->at(p)) return false;  // a green panel enclosed by the ball's white
-        return carpetColourAt(p);
+        // Not a green panel enclosed by the ball's white; the colour first, as the panel walk is
+        // the costly part of validation and only carpet-coloured pixels need it.
+        return carpetColourAt(p) && !(panels && panels->at(p));
     }
     // The same by colour alone (every green panel of the carpet's colour is carpet).
     bool carpetColourAt(cv::Point p) const
@@ -120,27 +121,35 @@ struct Circle {
 void scoreSquare(const Circle& c, int squareSide, ValidationScores& s)
 {
     const int half = squareSide / 2;
+    const int y0 = std::max(0, c.y - half), y1 = std::min(c.classes.rows - 1, c.y + half);
+    const int x0 = std::max(0, c.x - half), x1 = std::min(c.classes.cols - 1, c.x + half);
     int used = 0;
-    int green = 0;
     int colourGreen = 0;  // carpet by colour alone
     int black = 0;
     int hint = 0;
-    for (int yy = std::max(0, c.y - half); yy <= std::min(c.classes.rows - 1, c.y + half); ++yy) {
+    for (int yy = y0; yy <= y1; ++yy) {
         const std::uint8_t* cls = c.classes.ptr<std::uint8_t>(yy);
         const std::uint8_t* u = c.geometry.usedMask().ptr<std::uint8_t>(yy);
-        for (int xx = std::max(0, c.x - half); xx <= std::min(c.classes.cols - 1, c.x + half); ++xx) {
+        for (int xx = x0; xx <= x1; ++xx) {
             if (!u[xx]) continue;
             ++used;
-            if (c.roles.field(cls[xx])) {
-                green += c.carpetAt({xx, yy});
-                colourGreen += c.carpetColourAt({xx, yy});
-            }
+            colourGreen += c.carpetColourAt({xx, yy});
             black += c.blackAt({xx, yy});
             hint += c.hint != ColorClass::Unknown && cls[xx] == std::uint8_t(c.hint);
         }
     }
     if (used > 0) {
         const double ownPct = 100.0 * (used - colourGreen) / used;
+        // The green panels count only for a square with enough of its own colour: only then is
+        // the panel walk (carpetAt) worth its cost.
+        int green = colourGreen;
+        if (ownPct >= c.options.greenPanelMinOwnPct && c.panels) {
+            green = 0;
+            for (int yy = y0; yy <= y1; ++yy) {
+                const std::uint8_t* u = c.geometry.usedMask().ptr<std::uint8_t>(yy);
+                for (int xx = x0; xx <= x1; ++xx) green += u[xx] && c.carpetAt({xx, yy});
+            }
+        }
         s.nonGreenPct = ownPct < c.options.greenPanelMinOwnPct ? ownPct : 100.0 * (used - green) / used;
         s.nonBlackPct = 100.0 * (used - black) / used;
         s.hintPct = 100.0 * hint / used;
