@@ -33,8 +33,9 @@ cv::Point2d centroidOnce(const FrameColour& colour, const cv::Mat& classes, cons
 }  // namespace
 
 RecentreCounts recentreRefusals(std::vector<BallCandidate>& candidates, std::size_t first, const cv::Mat& binary,
-                     const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry, const BallModel& ball,
-                     const ValidationOptions& options, const FrameColour& colour, const ColourRoles& roles)
+                                const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry,
+                                const BallModel& ball, const ValidationOptions& options, const FrameColour& colour,
+                                const ColourRoles& roles)
 {
     const auto processed = [&](cv::Point q) {
         return q.x >= 0 && q.y >= 0 && q.x < classes.cols && q.y < classes.rows && geometry.isUsed(q.x, q.y);

@@ -32,7 +32,8 @@ struct RecentreCounts {
 // the tail (the window shows the tail's shape as never measured): [first, first + kept) are
 // the kept ones. `binary` is the front end's (0 = non-green), for the class share.
 RecentreCounts recentreRefusals(std::vector<BallCandidate>& candidates, std::size_t first, const cv::Mat& binary,
-                     const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry, const BallModel& ball,
-                     const ValidationOptions& options, const FrameColour& colour, const ColourRoles& roles);
+                                const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry,
+                                const BallModel& ball, const ValidationOptions& options, const FrameColour& colour,
+                                const ColourRoles& roles);
 
 }  // namespace omnitune

@@ -68,8 +68,8 @@ SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry
             if (x < size.width) {
                 const double d = geometry.distanceAt(x, y);
                 const bool used = geometry.isUsed(x, y);
-                const bool masked = options.maskedCentres && !maskedInRing.empty() &&
-                                          maskedInRing.at<std::uint8_t>(y, x) != 0;
+                const bool masked =
+                    options.maskedCentres && !maskedInRing.empty() && maskedInRing.at<std::uint8_t>(y, x) != 0;
                 const auto w = std::uint8_t(d < options.nearRobotRadius ? options.nearRobotWeight : 1);
                 weight_.at<std::uint8_t>(y, x) = used ? w : 0;
                 maskedWeight_.at<std::uint8_t>(y, x) = masked ? w : 0;

@@ -439,7 +439,8 @@ RejectReason failedColourTest(const ValidationScores& s, const ValidationOptions
 RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& options, bool hintKnown, double minRadiusPx)
 {
     if (c.expectedRadiusPx < minRadiusPx) return RejectReason::TooSmall;
-    if (const RejectReason colour = failedColourTest(c.scores, options, hintKnown); colour != RejectReason::None) return colour;
+    const RejectReason colour = failedColourTest(c.scores, options, hintKnown);
+    if (colour != RejectReason::None) return colour;
     if (c.scores.circularityPct < options.minCircularityPct) return RejectReason::Circularity;
     if (options.circleFit) {
         const double allowance = fitAllowance(c.expectedRadiusPx, options);

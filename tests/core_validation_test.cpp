@@ -176,7 +176,8 @@ private slots:
         BallCandidate full = candidateAt(s, p);
         BallCandidate stopped = full;
         validateCandidate(full, s.classes, s.edges, s.geometry, s.ball, c.validation);
-        validateCandidate(stopped, s.classes, s.edges, s.geometry, s.ball, c.validation, nullptr, defaultColourRoles(), true);
+        validateCandidate(stopped, s.classes, s.edges, s.geometry, s.ball, c.validation, nullptr, defaultColourRoles(),
+                          true);
         QCOMPARE(full.rejected, expected);
         QCOMPARE(stopped.rejected, expected);
         QCOMPARE(stopped.scores.nonBlackPct, full.scores.nonBlackPct);

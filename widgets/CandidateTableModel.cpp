@@ -259,7 +259,8 @@ QString CandidateTableModel::columnToolTip(int column) const
 QString CandidateTableModel::cellToolTip(const BallCandidate& c, int column, RowKind kind) const
 {
     QString tip = columnToolTip(column);
-    if (kind == RowKind::Prefiltered && (column == CircularityColumn || column == RunOnColumn || column == ResultColumn))
+    const bool shapeColumn = column == CircularityColumn || column == RunOnColumn || column == ResultColumn;
+    if (kind == RowKind::Prefiltered && shapeColumn)
         tip += tr("\nNot validated: the candidate prefilter (hough.prefilter_*) refused it on its square's colour or "
                   "at the mirror rim, so its shape was never measured.");
     if (kind == RowKind::Recentred && (column == SourceColumn || column == ResultColumn))
