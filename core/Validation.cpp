@@ -506,8 +506,7 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
     }
     ValidationScores s;
     scoreSquare(circle, squareSide, s);
-    // The same hint test as firstFailedTest's.
-    const bool hintKnown = roles.idOf(options.ballHint) != ColorClass::Unknown;
+    const bool hintKnown = circle.hint != ColorClass::Unknown;  // as firstFailedTest's caller
     if (stopAtColour && failedColourTest(s, options, hintKnown) != RejectReason::None) return s;
     scoreCircularity(circle, s);
     scoreRunOn(circle, s);
