@@ -4,6 +4,7 @@
 #include "core/ConfigWriter.h"
 #include "core/Pi.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -98,6 +99,23 @@ cv::Vec3f carpetColour(OpticsCarpet carpet)
     case OpticsCarpet::Teal: return {140, 145, 35};       // hue ~88: past the default green box
     }
     return {40, 140, 40};
+}
+
+// A ball beyond the carpet is out of play, and no team asks the detector for it: slide the whole
+// scene (our robot, the ball, the others, the feet) by the least translation that puts the ball,
+// all of it, on the carpet. Everything seen from our robot stays as it was drawn.
+void keepBallOnCarpet(OpticsScene& s, const FieldModel& field)
+{
+    const cv::Rect2d carpet = field.carpetBounds();
+    const double r = s.ballRadius;
+    const double x = std::clamp(s.ball.x, carpet.x + r, carpet.x + carpet.width - r);
+    const double y = std::clamp(s.ball.y, carpet.y + r, carpet.y + carpet.height - r);
+    const cv::Point2d shift(x - s.ball.x, y - s.ball.y);
+    s.robot.x += shift.x;
+    s.robot.y += shift.y;
+    s.ball += shift;
+    s.feetAt += shift;
+    for (OpticsRobot& other : s.robots) other.at += shift;
 }
 
 }  // namespace
@@ -251,6 +269,7 @@ OpticsScene opticsCellScene(const OpticsCell& cell, int frame, const OpticsRende
     }
     }
     if (!(cell.distractors == OpticsDistractors::RobotsFeetShadow && situation == 1)) s.ball = ballAt(dist, az);
+    keepBallOnCarpet(s, renderer.field());
     return s;
 }
 
