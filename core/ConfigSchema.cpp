@@ -695,6 +695,12 @@ std::vector<ConfigKey> buildSchema()
                           "line_blob_armless_min_pct: the disc (expected radii around the centre) that must reach a masked or "
                           "outside pixel; 0 judges every armless blob, the penalty spot and a plain white ball in the open too",
                           [](auto& c) -> auto& { return c.validation.lineBlobCutReach; }));
+    s.push_back(doubleKey("validation.line_blob_cut_max_radius_px", "px", 0, 200, false,
+                          "line_blob_armless_min_pct: candidates larger than line_arms_max_radius_px are judged too, as "
+                          "armless, up to this expected radius (a penalty spot or a line's end half behind a support rod), "
+                          "unless their line_blob_cut_reach disc reaches our body (a ball touching it is cut by it); at or "
+                          "below line_arms_max_radius_px only the far candidates are",
+                          [](auto& c) -> auto& { return c.validation.lineBlobCutMaxRadiusPx; }));
     s.push_back(doubleKey("validation.line_blob_armless_max_panel_pct", "%", 0, 100, false,
                           "line_blob_armless_min_pct: not applied when more than this share of the disc has a class with the "
                           "black, ball or marker role (a white ball's dark or coloured panels; no line has them)",

@@ -548,12 +548,22 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
         minRadiusPx = std::min(minRadiusPx, options.rimMinRadiusPx);
     }
     c.rejected = firstFailedTest(c, options, roles.idOf(options.ballHint) != ColorClass::Unknown, minRadiusPx);
-    if (c.rejected == RejectReason::None && options.lineArms && c.expectedRadiusPx <= options.lineArmsMaxRadiusPx) {
-        // From the ball's border as the fit found it: a larger ball's tangent line is no arm.
-        const double radius = std::max(c.expectedRadiusPx, c.scores.fitRadiusPx);
+    if (c.rejected != RejectReason::None || !options.lineArms) return;
+    // Arms are looked for on far candidates only. Nearer ones (up to line_blob_cut_max_radius_px)
+    // count as armless for the cut-blob test below, unless their cut disc reaches our body: a
+    // ball touching it is cut by it all the time.
+    const bool small = c.expectedRadiusPx <= options.lineArmsMaxRadiusPx;
+    const bool clearOfBody =
+        c.distancePx - options.lineBlobCutReach * c.expectedRadiusPx > geometry.options().innerRadius;
+    if (small || (c.expectedRadiusPx <= options.lineBlobCutMaxRadiusPx && clearOfBody)) {
         const PaleLine pale = paleLineAround(colour, classes, geometry, roles, c, options);
-        const LineArms arms = lineArmsAround(classes, geometry, roles, c.x, c.y, radius, options.lineArmsReach,
-                                             options.lineArmsLateralPx, pale);
+        LineArms arms;
+        if (small) {
+            // From the ball's border as the fit found it: a larger ball's tangent line is no arm.
+            const double radius = std::max(c.expectedRadiusPx, c.scores.fitRadiusPx);
+            arms = lineArmsAround(classes, geometry, roles, c.x, c.y, radius, options.lineArmsReach,
+                                  options.lineArmsLateralPx, pale);
+        }
         if (arms.junction(options.lineArmsMaxAngleDeg)) {
             c.rejected = RejectReason::LineJunction;
             return;

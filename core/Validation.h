@@ -248,6 +248,11 @@ struct ValidationOptions {
     // expected radii; the disc around the centre that must reach masked or outside pixels. 0
     // judges every armless blob: the penalty spot too, and a plain white ball in the open.
     double lineBlobCutReach = 1.5;
+    // px; the cut-blob test (lineBlobArmlessMinPct) also judges candidates larger than
+    // lineArmsMaxRadiusPx, up to this expected radius, as armless: a penalty spot or a line's end
+    // half behind a support rod at 8-15 px made most of the rods cells' false positives. At or
+    // below lineArmsMaxRadiusPx: only the far candidates are judged (the earlier rule).
+    double lineBlobCutMaxRadiusPx = 40.0;
     // %; not when more than this share of the line-share disc shows a ball's panels (black, ball
     // or marker classes), which no line has: a white ball behind a rod keeps its dark panels.
     double lineBlobArmlessMaxPanelPct = 3.0;

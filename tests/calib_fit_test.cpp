@@ -185,6 +185,28 @@ private slots:
         for (double r = 61; r < 215; r += 2) QVERIFY(map.toGround(r + 1) > map.toGround(r));
     }
 
+    // Marks laid 5 cm apart close against the body, in several directions: the radius of a
+    // farther one is now and then a pixel or two below a nearer one's (the centre is off by that
+    // in some direction). The table pools such neighbours instead of refusing the marks.
+    void distanceMapTablePoolsScatteredMarks()
+    {
+        std::vector<DistancePoint> pts;
+        for (int i = 0; i < 60; ++i) {
+            const double r = 60 + 2.5 * i;
+            const double d = r < 180 ? 0.01 * r : 1.8 + 0.3 * (r - 180);
+            const double scatter = r < 150 ? (i % 2 ? -2.25 : 2.25) : 0.0;  // an odd mark 2 px inside the even one
+            pts.push_back({r + scatter, d, i + 2});
+        }
+        const DistanceMapFitResult result = fitDistanceMap(pts);
+        QVERIFY2(result.ok(), result.ok() ? "" : result.error->message.c_str());
+        QVERIFY(result.fit.pointsTable);
+        QVERIFY2(result.fit.rmsCm < 2.0, qPrintable(QString("RMS %1 cm").arg(result.fit.rmsCm)));
+        DistanceMapOptions options;
+        applyDistanceMapFit(result.fit, options);
+        const DistanceMap map(options);
+        for (double r = 61; r < 205; r += 2) QVERIFY(map.toGround(r + 1) > map.toGround(r));
+    }
+
     void distanceMapRefusesTooFewPoints()
     {
         const std::vector<DistancePoint> pts = {{60, 0.3}, {90, 0.6}, {120, 1.0}, {150, 1.6}};

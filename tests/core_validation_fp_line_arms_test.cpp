@@ -1,7 +1,8 @@
-// validation.line_arms (with line_arms_pale), validation.line_blob_min_pct and
-// line_blob_armless_min_pct (issue 9, false positives): a junction of far lines, or a line's end, is a round blob of line colour of a far ball's size and passes
-// the shape tests; the lines leaving it like spokes give it away. A ball beside a line, on a
-// line, at a line's end, or a white ball alone, still passes.
+// validation.line_arms (with line_arms_pale), validation.line_blob_min_pct,
+// line_blob_armless_min_pct and line_blob_cut_max_radius_px (issue 9, false positives): a
+// junction of far lines, or a line's end, is a round blob of line colour of a far ball's size
+// and passes the shape tests; the lines leaving it like spokes give it away. A ball beside a
+// line, on a line, at a line's end, or a white ball alone, still passes.
 #include "DrawnCandidate.h"
 #include "core/FrameColour.h"
 #include "core/LineArms.h"
@@ -154,8 +155,8 @@ private slots:
     {
         Config c;
         const FarSpot spot = farSpot(c);  // named members, not a structured binding: lambdas capture them
-    const cv::Point p = spot.p;
-    const double r = spot.r;
+        const cv::Point p = spot.p;
+        const double r = spot.r;
         const cv::Point2d dir(std::cos(120.0 * M_PI / 180.0), std::sin(120.0 * M_PI / 180.0));
         auto scene = [&](bool panels, bool rod) {
             cv::Mat frame = greenField(c);
@@ -196,6 +197,53 @@ private slots:
         QVERIFY2(off.rejected == RejectReason::None, qPrintable("off: " + verdict(off)));
     }
 
+    // validation.line_blob_cut_max_radius_px: a nearer white blob (a penalty spot, a line's end)
+    // half behind a support rod is too large for the arms, but the cut-blob test judges it as
+    // armless and rejects it; an orange ball half behind the same rod passes, and so does a white
+    // blob cut by our body (a white ball touching it). At 0 the spot passes (the earlier rule).
+    void nearSpotHalfBehindARodIsALineBlob()
+    {
+        Config c;
+        const double distance = distanceForRadius(c, 12.0);
+        const cv::Point2d q = pointAt(c, distance, 200);
+        const cv::Point p(int(std::lround(q.x)), int(std::lround(q.y)));
+        const double r = expectedRadius(c, distance);
+        QVERIFY2(r > c.validation.lineArmsMaxRadiusPx, qPrintable(QString("expected %1 px").arg(r)));
+        auto disc = [&](const cv::Scalar& colour, cv::Point at, double radius) {
+            cv::Mat frame = greenField(c);
+            cv::circle(frame, at, int(std::lround(radius)), colour, cv::FILLED);
+            cv::GaussianBlur(frame, frame, cv::Size(5, 5), 0.8);
+            return frame;
+        };
+        // The rod: a masked band, one expected radius wide, from the centre over one side of the disc.
+        const cv::Point2d radial = (q - cv::Point2d(c.geometry.centerX, c.geometry.centerY)) / distance;
+        const cv::Point2d tangent(-radial.y, radial.x);
+        cv::Mat rodMask(c.geometry.imageHeight, c.geometry.imageWidth, CV_8UC1, cv::Scalar(255));
+        const cv::Point2d mid = q + tangent * (0.5 * r);
+        cv::line(rodMask, cv::Point(mid - radial * 6.0 * r), cv::Point(mid + radial * 6.0 * r), cv::Scalar(0),
+                 int(std::lround(r)));
+        Config masked = c;
+        masked.mask = rodMask;
+
+        const BallCandidate spot = validate(masked, disc(kWhite, p, r), p);
+        QVERIFY2(spot.rejected == RejectReason::LineBlob, qPrintable(verdict(spot)));
+        const BallCandidate ball = validate(masked, disc(kOrange, p, r), p);
+        QVERIFY2(ball.rejected == RejectReason::None, qPrintable(verdict(ball)));
+        Config earlier = masked;
+        earlier.validation.lineBlobCutMaxRadiusPx = 0.0;
+        const BallCandidate passed = validate(earlier, disc(kWhite, p, r), p);
+        QVERIFY2(passed.rejected == RejectReason::None, qPrintable("0: " + verdict(passed)));
+
+        // Touching our body: the body cuts it (no rod), and it is not judged.
+        double atBody = c.geometry.innerRadius + 1.0;
+        while (atBody - c.geometry.innerRadius < 0.7 * expectedRadius(c, atBody)) atBody += 1.0;
+        const cv::Point2d b = pointAt(c, atBody, 200);
+        const cv::Point bp(int(std::lround(b.x)), int(std::lround(b.y)));
+        const BallCandidate touching = validate(c, disc(kWhite, bp, expectedRadius(c, atBody)), bp);
+        qInfo().noquote() << "touching the body:" << verdict(touching);
+        QVERIFY2(touching.rejected != RejectReason::LineBlob, qPrintable(verdict(touching)));
+    }
+
     // validation.line_arms_pale: in dim light a junction of far lines is grey, below the line
     // class (V 120 on a carpet of V 70: no class at all), so by class alone it has no arm and
     // passes; its pale pixels give its two arms back. An orange ball on the same carpet passes.
@@ -203,8 +251,8 @@ private slots:
     {
         Config c;
         const FarSpot spot = farSpot(c);  // named members, not a structured binding: lambdas capture them
-    const cv::Point p = spot.p;
-    const double r = spot.r;
+        const cv::Point p = spot.p;
+        const double r = spot.r;
         const cv::Scalar dimGreen(25, 70, 25);
         const cv::Scalar grey(120, 120, 120);
         auto scene = [&](bool junction) {

@@ -144,12 +144,13 @@ DistanceMapFitResult fitAtDegree(const std::vector<DistancePoint>& points, const
     return result;
 }
 
-// px: marks this close in radius, out of order in distance, are a tie of clicking, not a contradiction.
-constexpr double kTableTiePx = 1.0;
+// px: marks out of order in distance by this little in radius are scatter (clicking, the centre a
+// pixel or two off in one direction, marks laid 5 cm apart), not a contradiction.
+constexpr double kTableScatterPx = 3.0;
 
-// The points' mean radius per measured distance (mm), kept where it rises; none when a farther
-// distance is seen clearly nearer than a shorter one.
-std::optional<DistanceMapFit> pointsTable(const std::vector<DistancePoint>& points)
+}  // namespace
+
+std::optional<DistanceMapFit> fitPointsTable(const std::vector<DistancePoint>& points)
 {
     std::map<long, std::pair<double, int>> rings;  // mm -> (radius sum, count)
     for (const DistancePoint& p : points) {
@@ -157,15 +158,30 @@ std::optional<DistanceMapFit> pointsTable(const std::vector<DistancePoint>& poin
         r.first += p.radiusPx;
         ++r.second;
     }
+    struct Pool {
+        double distanceSum = 0.0, radiusSum = 0.0;
+        int count = 0;
+        double radius() const { return radiusSum / count; }
+    };
+    std::vector<Pool> pools;
+    for (const auto& [mm, sum] : rings) {
+        const Pool ring{mm / 1000.0 * sum.second, sum.first, sum.second};
+        if (!pools.empty() && ring.radius() < pools.back().radius() - kTableScatterPx)
+            return std::nullopt;  // a farther mark seen nearer: a mis-typed distance, not the mirror
+        pools.push_back(ring);
+        while (pools.size() >= 2 && pools.back().radius() <= pools[pools.size() - 2].radius() + 0.05) {
+            const Pool last = pools.back();
+            pools.pop_back();
+            pools.back().distanceSum += last.distanceSum;
+            pools.back().radiusSum += last.radiusSum;
+            pools.back().count += last.count;
+        }
+    }
     DistanceMapFit fit;
     fit.pointsTable = true;
-    for (const auto& [mm, sum] : rings) {
-        const double radius = sum.first / sum.second;
-        if (!fit.tableRadiiPx.empty() && radius < fit.tableRadiiPx.back() - kTableTiePx)
-            return std::nullopt;  // a farther mark seen nearer: a mis-typed distance, not the mirror
-        if (!fit.tableRadiiPx.empty() && radius <= fit.tableRadiiPx.back() + 0.05) continue;  // a tie: one is enough
-        fit.tableRadiiPx.push_back(radius);
-        fit.tableDistancesM.push_back(mm / 1000.0);
+    for (const Pool& pool : pools) {
+        fit.tableRadiiPx.push_back(pool.radius());
+        fit.tableDistancesM.push_back(pool.distanceSum / pool.count);
     }
     if (fit.tableRadiiPx.size() < 3) return std::nullopt;
     fit.minRadiusPx = fit.tableRadiiPx.front();
@@ -176,7 +192,6 @@ std::optional<DistanceMapFit> pointsTable(const std::vector<DistancePoint>& poin
     return fit;
 }
 
-}  // namespace
 
 DistanceMapFitResult fitDistanceMap(const std::vector<DistancePoint>& points, const DistanceMapFitOptions& options)
 {
@@ -184,7 +199,7 @@ DistanceMapFitResult fitDistanceMap(const std::vector<DistancePoint>& points, co
     DistanceMapFitResult result = fitAtDegree(points, options, true, &anotherRises);
     // Bent back, and no other degree rises: the points' own table.
     if (result.error && result.error->kind == FitErrorKind::NotMonotone && !anotherRises) {
-        if (auto table = pointsTable(points)) {
+        if (auto table = fitPointsTable(points)) {
             table->note = "no polynomial of degree 1..6 rises over all the points, so the map is their mean radius per "
                           "measured distance (" + std::to_string(table->tableRadiiPx.size()) + " distances), interpolated "
                           "monotone";

@@ -54,6 +54,12 @@ struct DistanceMapFitResult {
 // degree rises over the points the fit is the points' table (`pointsTable`).
 DistanceMapFitResult fitDistanceMap(const std::vector<DistancePoint>& points, const DistanceMapFitOptions& options = {});
 
+// The points' own table: their mean radius per measured distance (mm), neighbouring distances
+// whose radii do not rise pooled into one (their mean distance at their mean radius), so the
+// table rises; `pointsTable` set. None when a farther distance is seen clearly nearer than a
+// shorter one (a mis-typed distance) or fewer than 3 distances remain.
+std::optional<DistanceMapFit> fitPointsTable(const std::vector<DistancePoint>& points);
+
 // Writes the fit's table into the map (pixel_radii, ground_distances); height and ball radius stay.
 void applyDistanceMapFit(const DistanceMapFit& fit, DistanceMapOptions& map);
 

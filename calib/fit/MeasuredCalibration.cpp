@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
 
 namespace omnitune {
 
@@ -98,22 +97,9 @@ MeasuredCalibration calibrateFromMeasurements(const Config& base, const CameraMe
     }
     DistanceMapOptions polyMap = c.distanceMap, ringMap = c.distanceMap;
     if (best) applyDistanceMapFit(*best, polyMap);
-    {
-        std::map<long, std::pair<double, int>> rings;  // mm -> (radius sum, count)
-        for (const DistancePoint& p : points) {
-            auto& r = rings[std::lround(p.distanceM * 1000)];
-            r.first += p.radiusPx;
-            ++r.second;
-        }
-        ringMap.pixelRadii.clear();
-        ringMap.groundDistances.clear();
-        for (const auto& [mm, sum] : rings) {
-            const double radius = sum.first / sum.second;
-            if (!ringMap.pixelRadii.empty() && radius <= ringMap.pixelRadii.back() + 0.05) continue;
-            ringMap.pixelRadii.push_back(radius);
-            ringMap.groundDistances.push_back(mm / 1000.0);
-        }
-    }
+    ringMap.pixelRadii.clear();
+    ringMap.groundDistances.clear();
+    if (const auto rings = fitPointsTable(points)) applyDistanceMapFit(*rings, ringMap);
     auto withOrigin = [](DistanceMapOptions map) {
         // Below the first mark the map runs straight to (0 px, 0 m): put that point in the table.
         if (!map.pixelRadii.empty() && map.pixelRadii.front() > 1) {

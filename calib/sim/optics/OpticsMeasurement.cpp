@@ -3,6 +3,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
+#include <vector>
 
 namespace omnitune {
 
@@ -28,12 +29,21 @@ CameraMeasurements measureOpticsCamera(const OpticsRenderer& renderer, const Opt
     cv::RNG rng(options.seed);
     m.viewpointHeight = camera.params().measuredViewpointHeight;
 
-    // Floor marks: every markStepM along each direction, as far as the mirror shows them.
+    // Floor marks: every nearMarkStepM against the body, then every markStepM along each
+    // direction as far as the mirror shows them.
+    std::vector<double> marks;
+    const double nearTo = options.firstMarkM + options.markStepM - 1e-9;  // the second far mark, exclusive
+    for (int i = 0; options.nearMarksFromM + i * options.nearMarkStepM < nearTo; ++i)
+        marks.push_back(options.nearMarksFromM + i * options.nearMarkStepM);
+    for (double d = options.firstMarkM + options.markStepM; d < 12.0; d += options.markStepM) marks.push_back(d);
     for (int k = 0; k < options.markDirections; ++k) {
         const double a = 2 * CV_PI * (k + 0.25) / options.markDirections;
-        for (double d = 0.4; d < 12.0; d += options.markStepM) {
+        for (double d : marks) {
             const auto p = camera.project({d * std::cos(a), d * std::sin(a), 0.0});
-            if (!p) break;
+            if (!p) {
+                if (d > options.firstMarkM) break;  // past the rim
+                continue;
+            }
             if (!seesWorld(camera, *p)) continue;  // behind a rod or the body, or out of the frame
             CalibrationPoint c;
             c.fromImagePoint = true;
