@@ -192,7 +192,6 @@ std::optional<DistanceMapFit> fitPointsTable(const std::vector<DistancePoint>& p
     return fit;
 }
 
-
 DistanceMapFitResult fitDistanceMap(const std::vector<DistancePoint>& points, const DistanceMapFitOptions& options)
 {
     bool anotherRises = false;
