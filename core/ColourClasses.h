@@ -93,6 +93,7 @@ public:
     bool field(std::uint8_t id) const { return is(id, ColourRole::Field); }
     bool black(std::uint8_t id) const { return is(id, ColourRole::Black); }
     bool line(std::uint8_t id) const { return is(id, ColourRole::Line); }
+    bool marker(std::uint8_t id) const { return is(id, ColourRole::Marker); }
     // The class named `name` (Unknown: none, or "none").
     ColorClass idOf(std::string_view name) const;
 

@@ -642,6 +642,10 @@ std::vector<ConfigKey> buildSchema()
                         "nor line, going on past line_contact_reach, are left out like rays into a robot: a ball at a person's "
                         "feet or a robot's grey side; off: such a ray finds no border and is a miss",
                         [](auto& c) -> auto& { return c.validation.foreignRaysUnknown; }));
+    s.push_back(boolKey("validation.marker_rays_unknown", false,
+                        "With ignore_occluded_rays, rays whose border leads into a team-marker class (a robot's coloured band) are "
+                        "left out like rays into black: the marker is part of a robot hiding the ball; off: they count as misses",
+                        [](auto& c) -> auto& { return c.validation.markerRaysUnknown; }));
     s.push_back(boolKey("validation.line_arms", false,
                         "A candidate that passes every test is rejected (line junction) when field lines leave it like spokes: two "
                         "line arms at less than line_arms_max_angle_deg, or three or more (a corner or a V of the far lines at "

@@ -64,6 +64,8 @@ struct Circle {
         return {pr * radial.x - pt * radial.y, pr * radial.y + pt * radial.x};
     }
 
+    // A class of a robot hiding the ball: black, or (markerRaysUnknown) a team marker.
+    bool robotAt(std::uint8_t cls) const { return roles.black(cls) || (options.markerRaysUnknown && roles.marker(cls)); }
     bool byColour() const { return colour && options.carpetByColour && carpet.valid(); }
     // A black-class pixel dark against the carpet around the candidate (blackByLocalCarpet).
     bool blackAt(cv::Point p) const
@@ -224,7 +226,7 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
         const cv::Point b = c.along(r + options.beyondEdgePx, ca, sa);
         const bool beyondKnown = c.known(b);
         const std::uint8_t beyond = beyondKnown ? c.classAt(b) : std::uint8_t(ColorClass::Unknown);
-        if (options.ignoreOccludedRays && c.roles.black(beyond)) {
+        if (options.ignoreOccludedRays && c.robotAt(beyond)) {
             ray.occluded = true;
             return ray;
         }
@@ -249,7 +251,7 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
     if (!ray.hit && !blocked && options.ignoreOccludedRays) {
         // No border at all: the ball may run on into a robot standing against it.
         const cv::Point e = c.along(rMax, ca, sa);
-        ray.occluded = c.known(e) && c.roles.black(c.classAt(e));
+        ray.occluded = c.known(e) && c.robotAt(c.classAt(e));
     }
     // A ray that found no border after passing unknown pixels may have lost it behind the mask.
     ray.judged = anyUsed && (ray.hit || blocked || !(sawUnknown && options.maskedRaysUnknown));

@@ -150,6 +150,10 @@ struct ValidationOptions {
     // circularity too (core/ForeignContact.h): a ball at a person's feet or a robot's grey side.
     // Off (the thesis): such a ray finds no border and counts as a miss.
     bool foreignRaysUnknown = true;
+    // A ray whose border leads into a team-marker class (a robot's cyan or magenta band) is left
+    // out of the circularity like a ray into black (ignoreOccludedRays): the marker is part of a
+    // robot hiding the ball. Off (the thesis): such a ray counts as a miss.
+    bool markerRaysUnknown = true;
     // The circularity and run-on tests look for the ellipse the ball model's squash gives
     // (ball.squash_c0..c2: radial over tangential semi-axis, the radial axis towards the mirror
     // centre) instead of a circle: a spherical mirror shows a ball at 1-2 m with a ratio of

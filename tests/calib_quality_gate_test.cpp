@@ -288,8 +288,10 @@ private slots:
     }
 
     // --auto-colours: each cell's colours from Auto colours on frames of its own field (another
-    // seed). On a carpet past the default green box the default colours lose most balls; the
-    // calibrated ones find them, and the calibration never sees the judged frames' truth.
+    // seed). On a carpet past the default green box the default colours lose balls (they take
+    // the teal carpet for a robot's cyan marker, and find only the balls whose rays into it are
+    // left out as occluded: 6 of 8 with marker_rays_unknown, none without); the calibrated ones
+    // find them all, and the calibration never sees the judged frames' truth.
     void autoColoursCalibrateEachCell()
     {
         OpticsCell cell;
@@ -303,7 +305,7 @@ private slots:
         QCOMPARE(calibrated.withBall, byDefault.withBall);
         qInfo("teal carpet, specific: default colours %d, Auto colours %d of %d balls", byDefault.correct, calibrated.correct,
               calibrated.withBall);
-        QVERIFY2(calibrated.correct >= byDefault.correct + 3,
+        QVERIFY2(calibrated.correct == calibrated.withBall && calibrated.correct >= byDefault.correct + 2,
                  qPrintable(QString("%1 -> %2 of %3").arg(byDefault.correct).arg(calibrated.correct).arg(calibrated.withBall)));
     }
 

@@ -56,7 +56,11 @@ private slots:
     {
         QFETCH(int, kind);
         QFETCH(bool, cyan);
-        checkRuleAcceptsIt(Config{}, &ValidationOptions::foreignRaysUnknown, kDistance, kAngle,
+        // A cyan block is a team marker: marker_rays_unknown alone would pass the ball. Off, so
+        // that this rule is the one measured.
+        Config c;
+        c.validation.markerRaysUnknown = !cyan;
+        checkRuleAcceptsIt(c, &ValidationOptions::foreignRaysUnknown, kDistance, kAngle,
                            [&](cv::Mat& f, cv::Point p, double r) { drawBallAgainst(f, p, r, cyan ? kCyan : kGrey, kind); });
     }
 

@@ -392,6 +392,24 @@ private slots:
         QVERIFY2(off.rejected == RejectReason::Circularity, qPrintable(verdict(off)));
     }
 
+    // A red ball (no class of its own) partly hidden by a robot's magenta marker band: ball and
+    // band are one non-green blob, so the rays into the band find no border. They are left out
+    // like rays into the robot's black (marker_rays_unknown); off, they are misses and it fails.
+    void ballHalfBehindRobotMarker()
+    {
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 150, 30, cv::Scalar(60, 60, 200));
+        const int r = int(std::lround(expectedRadius(c, 150)));
+        const cv::Scalar magenta(200, 30, 210);
+        cv::rectangle(frame, cv::Rect(p.x - r / 3 - 3 * r, p.y - 4 * r, 3 * r, 8 * r), magenta, cv::FILLED);
+        const BallCandidate on = validateFrame(c, frame, p);
+        QVERIFY2(on.rejected == RejectReason::None, qPrintable(verdict(on)));
+        c.validation.markerRaysUnknown = false;
+        const BallCandidate off = validateFrame(c, frame, p);
+        QVERIFY2(off.rejected == RejectReason::Circularity, qPrintable(verdict(off)));
+    }
+
     // A ball blurred by 7 px of motion, with sensor noise (sigma 6), drawn 2-3 px larger than the
     // ball model expects (a model 2-3 px off on a real camera): the fitted circle passes it, the
     // thesis' band around the expected radius does not.
