@@ -443,7 +443,7 @@ RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& op
     if (c.expectedRadiusPx < minRadiusPx) return RejectReason::TooSmall;
     const RejectReason colour = failedColourTest(c.scores, options, hintKnown);
     if (colour != RejectReason::None) return colour;
-    if (c.scores.circularityPct < options.minCircularityPct) return RejectReason::Circularity;
+    if (c.scores.circularityPct < requiredCircularityPct(c, options)) return RejectReason::Circularity;
     if (options.circleFit) {
         const double allowance = fitAllowance(c.expectedRadiusPx, options);
         const bool offModel = std::abs(c.scores.fitRadiusPx - c.expectedRadiusPx) > allowance ||
@@ -518,6 +518,13 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
 double fitAllowance(double expectedRadiusPx, const ValidationOptions& options)
 {
     return std::max(options.fitMaxRadiusErrorPx, options.fitMaxRadiusError * expectedRadiusPx);
+}
+
+double requiredCircularityPct(const BallCandidate& c, const ValidationOptions& options)
+{
+    const bool clear =
+        c.scores.nonBlackPct >= options.clearMinNonBlackPct && c.expectedRadiusPx >= options.clearMinRadiusPx;
+    return clear ? std::min(options.minCircularityPct, options.minCircularityClearPct) : options.minCircularityPct;
 }
 
 void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry,

@@ -22,6 +22,19 @@ struct ValidationOptions {
     // 30 found 2 points more balls (part-black balls, balls in shade) and no more false positives.
     double minNonBlackPct = 30.0;
     double minCircularityPct = 70.0; // %; a still ball gives ~90, motion blur lowers it
+    // %; the circularity a candidate in the clear needs: its square at least clearMinNonBlackPct
+    // non-black, so no robot hides it and every usable ray is the ball's own border. Blur and
+    // noise cost such a ball a ray or two below minCircularityPct (a 10 px ball has 63 rays: 70 %
+    // is 45 hits, 65 % is 41). A candidate beside black keeps minCircularityPct: its rays into
+    // the robot are left out (ignoreOccludedRays) and the robot's own outline is what its other
+    // rays see. At or above minCircularityPct: one threshold for every candidate (the thesis).
+    // Optics matrix, 4 frames per cell, seeds 1-3: +29 balls, no false-positive frame more.
+    double minCircularityClearPct = 65.0;
+    double clearMinNonBlackPct = 70.0;  // %; the non-black share that puts a candidate in the clear
+    // px; the clear threshold applies to candidates whose expected radius is at least this: a far
+    // line junction or line end is as round as a small ball (see lineArms), and a line's V at
+    // 7 px or a line end against a robot at 8.6 px passed at 65 % on the optics matrix.
+    double clearMinRadiusPx = 9.0;
     double radiusTolerance = 0.15;   // fraction of the expected radius searched for an edge
     // px; the search band is never thinner. Segmentation and Canny put a small ball's border up
     // to ~1 px inside the expected radius; at 1.0 a third of 5 px balls failed circularity.
@@ -265,6 +278,11 @@ struct ValidationOptions {
 // How far a fitted circle's radius and centre may be off the expected ones (circle_fit):
 // max(fit_max_radius_error_px, fit_max_radius_error x the expected radius).
 double fitAllowance(double expectedRadiusPx, const ValidationOptions& options);
+
+// The circularity % a scored candidate needs: minCircularityClearPct when it is in the clear (its
+// square clearMinNonBlackPct non-black or more, its expected radius clearMinRadiusPx or more) and
+// that is the lower one, else minCircularityPct.
+double requiredCircularityPct(const BallCandidate& candidate, const ValidationOptions& options);
 
 // Scores one candidate and sets its `rejected` field (first failing test: too small, then the
 // thesis order non-green, non-black, circularity, then our run-on test). `classes` holds colour

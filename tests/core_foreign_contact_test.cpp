@@ -57,9 +57,11 @@ private slots:
         QFETCH(int, kind);
         QFETCH(bool, cyan);
         // A cyan block is a team marker: marker_rays_unknown alone would pass the ball. Off, so
-        // that this rule is the one measured.
+        // that this rule is the one measured. So would the clear threshold (68-70 % without this
+        // rule): every candidate is held to min_circularity_pct here.
         Config c;
         c.validation.markerRaysUnknown = !cyan;
+        c.validation.minCircularityClearPct = c.validation.minCircularityPct;
         checkRuleAcceptsIt(c, &ValidationOptions::foreignRaysUnknown, kDistance, kAngle,
                            [&](cv::Mat& f, cv::Point p, double r) { drawBallAgainst(f, p, r, cyan ? kCyan : kGrey, kind); });
     }

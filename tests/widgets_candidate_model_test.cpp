@@ -200,8 +200,17 @@ void CandidateModelTest::headerAndTooltips()
     }
     const QString circ = model.headerData(Col::CircularityColumn, Qt::Horizontal, Qt::ToolTipRole).toString();
     QVERIFY2(circ.contains(QStringLiteral("validation.min_circularity_pct")) && circ.contains(QStringLiteral("70.0 %")), qPrintable(circ));
+    QVERIFY2(circ.contains(QStringLiteral("validation.min_circularity_clear_pct")) && circ.contains(QStringLiteral("65.0 %")),
+             qPrintable(circ));
+    // The circle is in the clear (77.7 % non-black): it is held to the clear threshold.
     const QString failed = model.index(1, Col::CircularityColumn).data(Qt::ToolTipRole).toString();
-    QVERIFY2(failed.contains(QStringLiteral("41.7 % is below 70.0 %")), qPrintable(failed));
+    QVERIFY2(failed.contains(QStringLiteral("41.7 % is below 65.0 %")), qPrintable(failed));
+    // Beside a robot (below validation.clear_min_non_black_pct) it is held to the thesis' 70 %.
+    PipelineResult beside = twoCandidates();
+    beside.candidates[1].scores.nonBlackPct = 50.0;
+    model.setResult(beside, Config{});
+    const QString held = model.index(1, Col::CircularityColumn).data(Qt::ToolTipRole).toString();
+    QVERIFY2(held.contains(QStringLiteral("41.7 % is below 70.0 %")), qPrintable(held));
 }
 
 void CandidateModelTest::thresholdsInTooltips()

@@ -35,7 +35,7 @@ QString candidateExplanation(const BallCandidate& k, const ValidationOptions& t)
         .arg(candidateLabel(k).toHtmlEscaped(), where, QString::number(k.radiusPx, 'f', 1), verdict,
              line(tr("non-green"), k.scores.nonGreenPct, t.minNonGreenPct),
              line(tr("non-black"), k.scores.nonBlackPct, t.minNonBlackPct),
-             line(tr("circularity"), k.scores.circularityPct, t.minCircularityPct));
+             line(tr("circularity"), k.scores.circularityPct, requiredCircularityPct(k, t)));
 }
 
 QString candidateLabelLegend()

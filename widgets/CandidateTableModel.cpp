@@ -6,6 +6,8 @@
 #include <QColor>
 #include <QFont>
 
+#include <algorithm>
+
 namespace omnitune {
 
 namespace {
@@ -58,9 +60,7 @@ void CandidateTableModel::clear()
 // Inside a model reset (or the constructor): views read everything again afterwards.
 void CandidateTableModel::setThresholds(const Config& config)
 {
-    const ValidationOptions& v = config.validation;
-    thresholds_ = Thresholds{v.minNonGreenPct, v.minNonBlackPct, v.minCircularityPct, v.radiusTolerance, v.minRadiusPx,
-                             config.hough.minAccumulator, config.opencvHough.maxRadiusRatio, v.maxRunOnPct};
+    thresholds_ = Thresholds{config.validation, config.hough.minAccumulator, config.opencvHough.maxRadiusRatio};
 }
 
 CandidateTableModel::RowKind CandidateTableModel::kindOf(int row) const
@@ -224,7 +224,7 @@ QString CandidateTableModel::columnToolTip(int column) const
         return tr("Expected ball radius at the centre's distance (specific) or the circle's own radius (OpenCV), px. "
                   "A candidate whose expected radius is below %1 px (validation.min_radius_px) is too far to validate; "
                   "an OpenCV circle larger than %2 x the expected radius (opencv_hough.max_radius_ratio) is rejected.")
-            .arg(number(t.minRadiusPx, 1), number(t.maxRadiusRatio, 2));
+            .arg(number(t.validation.minRadiusPx, 1), number(t.maxRadiusRatio, 2));
     case DistanceColumn: return tr("Distance of the centre from the robot centre, px; the expected radius follows from it.");
     case AccumulatorColumn:
         return tr("Sum of the Hough votes in the 3x3 neighbourhood of the maximum; maxima below %1 (hough.min_accumulator) "
@@ -233,20 +233,23 @@ QString CandidateTableModel::columnToolTip(int column) const
     case NonGreenColumn:
         return tr("Share of the processed pixels in the ball square that are not green; a ball needs at least %1 % "
                   "(validation.min_non_green_pct). Carpet patches fail it.")
-            .arg(number(t.minNonGreenPct, 1));
+            .arg(number(t.validation.minNonGreenPct, 1));
     case NonBlackColumn:
         return tr("Share of the processed pixels in the ball square that are not black; a ball needs at least %1 % "
                   "(validation.min_non_black_pct). Black robots fail it.")
-            .arg(number(t.minNonBlackPct, 1));
+            .arg(number(t.validation.minNonBlackPct, 1));
     case CircularityColumn:
         return tr("Share of the rays from the centre that meet an edge at the expected radius +- %1 % "
-                  "(validation.radius_tolerance); a ball needs at least %2 % (validation.min_circularity_pct). "
-                  "Lines, corners and feet fail it.")
-            .arg(number(t.radiusTolerance * 100.0, 0), number(t.minCircularityPct, 1));
+                  "(validation.radius_tolerance); a ball needs at least %2 % (validation.min_circularity_pct), or "
+                  "%3 % in the clear: its square at least %4 % non-black and its expected radius at least %5 px "
+                  "(validation.min_circularity_clear_pct). Lines, corners and feet fail it.")
+            .arg(number(t.validation.radiusTolerance * 100.0, 0), number(t.validation.minCircularityPct, 1),
+                 number(std::min(t.validation.minCircularityPct, t.validation.minCircularityClearPct), 1),
+                 number(t.validation.clearMinNonBlackPct, 1), number(t.validation.clearMinRadiusPx, 1));
     case RunOnColumn:
         return tr("Share of the rays along which the centre's colour runs on without a break beyond the circle; at most "
                   "%1 % (validation.max_run_on_pct). A ball has carpet just outside its border; line corners fail it.")
-            .arg(number(t.maxRunOnPct, 1));
+            .arg(number(t.validation.maxRunOnPct, 1));
     case ResultColumn:
         return tr("\"accepted\", or the first test that rejected the candidate: too far to validate, then the thesis' "
                   "non-green, non-black, circularity, then run-on, \"line junction\" (field lines leave it like "
@@ -274,19 +277,21 @@ QString CandidateTableModel::cellToolTip(const BallCandidate& c, int column, Row
     QString why;
     switch (c.rejected) {
     case RejectReason::NonGreen:
-        why = tr("%1 % is below %2 %").arg(number(c.scores.nonGreenPct, 1), number(t.minNonGreenPct, 1));
+        why = tr("%1 % is below %2 %").arg(number(c.scores.nonGreenPct, 1), number(t.validation.minNonGreenPct, 1));
         break;
     case RejectReason::NonBlack:
-        why = tr("%1 % is below %2 %").arg(number(c.scores.nonBlackPct, 1), number(t.minNonBlackPct, 1));
+        why = tr("%1 % is below %2 %").arg(number(c.scores.nonBlackPct, 1), number(t.validation.minNonBlackPct, 1));
         break;
     case RejectReason::Circularity:
-        why = tr("%1 % is below %2 %").arg(number(c.scores.circularityPct, 1), number(t.minCircularityPct, 1));
+        why = tr("%1 % is below %2 %")
+                  .arg(number(c.scores.circularityPct, 1), number(requiredCircularityPct(c, t.validation), 1));
         break;
     case RejectReason::TooSmall:
-        why = tr("expected radius %1 px is below %2 px").arg(number(c.expectedRadiusPx, 1), number(t.minRadiusPx, 1));
+        why = tr("expected radius %1 px is below %2 px")
+                  .arg(number(c.expectedRadiusPx, 1), number(t.validation.minRadiusPx, 1));
         break;
     case RejectReason::RunsOn:
-        why = tr("%1 % is above %2 %").arg(number(c.scores.runOnPct, 1), number(t.maxRunOnPct, 1));
+        why = tr("%1 % is above %2 %").arg(number(c.scores.runOnPct, 1), number(t.validation.maxRunOnPct, 1));
         break;
     case RejectReason::RadiusTooLarge:
         why = tr("radius %1 px is above %2 x %3 px expected")

@@ -5,6 +5,7 @@
 // red. Tooltips explain each column and the threshold it was compared against.
 #include "core/BallCandidate.h"
 #include "core/PipelineResult.h"
+#include "core/Validation.h"
 
 #include <QAbstractTableModel>
 
@@ -64,14 +65,9 @@ public:
 
 private:
     struct Thresholds {
-        double minNonGreenPct;
-        double minNonBlackPct;
-        double minCircularityPct;
-        double radiusTolerance;
-        double minRadiusPx;
+        ValidationOptions validation;
         int minAccumulator;
         double maxRadiusRatio;
-        double maxRunOnPct;
     };
 
     void setThresholds(const Config& config);

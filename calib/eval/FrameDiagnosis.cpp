@@ -56,7 +56,7 @@ int progressOf(const BallCandidate& c, const ValidationOptions& v)
     case RejectReason::TooSmall: return 1;
     case RejectReason::NonGreen: return 2;
     case RejectReason::NonBlack: return 3;
-    case RejectReason::Circularity: return c.scores.circularityPct >= v.minCircularityPct ? 5 : 4;
+    case RejectReason::Circularity: return c.scores.circularityPct >= requiredCircularityPct(c, v) ? 5 : 4;
     case RejectReason::RunsOn:
     case RejectReason::LineJunction:
     case RejectReason::LineBlob: return 6;  // the last shape tests: a miss there "runs on"
