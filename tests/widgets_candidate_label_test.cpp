@@ -1,0 +1,57 @@
+// The overlay's candidate label ("A3 98/100/96") and the pane tooltip's explanation: the failed
+// test stands out in bold against the threshold the candidate was judged by, which for the
+// circularity depends on the candidate (validation.min_circularity_clear_pct in the clear).
+#include "widgets/CandidateLabel.h"
+
+#include <QtTest>
+
+using namespace omnitune;
+
+namespace {
+
+// A specific-Hough candidate in radial area 3 (index 2) of ~10 px, rejected on circularity.
+BallCandidate roundish(double nonBlackPct, double circularityPct)
+{
+    BallCandidate c;
+    c.area = 2;
+    c.radiusPx = 10.4;
+    c.expectedRadiusPx = 10.4;
+    c.scores.nonGreenPct = 97.6;
+    c.scores.nonBlackPct = nonBlackPct;
+    c.scores.circularityPct = circularityPct;
+    c.rejected = RejectReason::Circularity;
+    return c;
+}
+
+}  // namespace
+
+class CandidateLabelTest : public QObject {
+    Q_OBJECT
+private slots:
+    void labelIsAreaAndScores() { QCOMPARE(candidateLabel(roundish(100, 96.2)), QStringLiteral("A3 98/100/96")); }
+
+    void circularityIsJudgedByTheCandidatesThreshold_data()
+    {
+        QTest::addColumn<double>("nonBlackPct");
+        QTest::addColumn<double>("circularityPct");
+        QTest::addColumn<QString>("line");
+        QTest::addColumn<bool>("failed");
+        QTest::newRow("in the clear, 67 % passes 65 %") << 100.0 << 67.0 << "circularity 67 % (min 65 %)" << false;
+        QTest::newRow("in the clear, 60 % fails 65 %") << 100.0 << 60.0 << "circularity 60 % (min 65 %)" << true;
+        QTest::newRow("beside a robot, 67 % fails 70 %") << 50.0 << 67.0 << "circularity 67 % (min 70 %)" << true;
+    }
+    void circularityIsJudgedByTheCandidatesThreshold()
+    {
+        QFETCH(double, nonBlackPct);
+        QFETCH(double, circularityPct);
+        QFETCH(QString, line);
+        QFETCH(bool, failed);
+        const QString text = candidateExplanation(roundish(nonBlackPct, circularityPct), ValidationOptions{});
+        QVERIFY2(text.contains(line), qPrintable(text));
+        QCOMPARE(text.contains("<b>" + line + "</b>"), failed);
+        QVERIFY2(text.contains("radial area 3"), qPrintable(text));
+    }
+};
+
+QTEST_GUILESS_MAIN(CandidateLabelTest)
+#include "widgets_candidate_label_test.moc"
