@@ -346,7 +346,8 @@ std::vector<ConfigKey> buildSchema()
     s.push_back(doubleKey("opencv_hough.min_dist", "px", 1, 1000, true, "Minimum distance between circle centres; too small duplicates a ball, too large misses balls",
                           [](auto& c) -> auto& { return c.opencvHough.minDist; }));
     s.push_back(doubleKey("opencv_hough.canny_high", "gradient", 1, 1020, true, "High threshold of HoughCircles' internal Canny (its low threshold is half). On the green / non-green image "
-                          "every gradient is a multiple of 510, so any value below 510 gives the same circles",
+                          "every gradient is a multiple of 510, so any value below 510 gives the same circles; with drop_specks it is raised "
+                          "on the binary input (never lowered)",
                           [](auto& c) -> auto& { return c.opencvHough.cannyHigh; }));
     s.push_back(doubleKey("opencv_hough.acc_threshold", "votes", 1, 1000, false, "Accumulator votes a circle centre needs; lower: more (and false) circles, higher: small balls missed",
                           [](auto& c) -> auto& { return c.opencvHough.accThreshold; }));
@@ -413,6 +414,12 @@ std::vector<ConfigKey> buildSchema()
                         "A circle centred on a masked pixel of the ring (a ball behind a support rod) is validated on its visible "
                         "part, as hough.masked_centres does for the specific search; off: refused as outside the area (thesis)",
                         [](auto& c) -> auto& { return c.opencvHough.maskedCentres; }));
+    s.push_back(boolKey("opencv_hough.drop_specks", false,
+                        "On the binary input, HoughCircles' Canny runs with canny_high raised to just below a straight border's "
+                        "gradient (four steps between the image's levels, less one), as edges.drop_specks does for the "
+                        "specific search: the rings around one-pixel specks drop out, every border stays, and a dim noisy frame's "
+                        "search stays fast. Off: canny_high as set",
+                        [](auto& c) -> auto& { return c.opencvHough.dropSpecks; }));
 
     // validation
     s.push_back(doubleKey("validation.min_non_green_pct", "%", 0, 100, true, "Non-green share the ball square needs; lower lets carpet patches through",

@@ -67,6 +67,22 @@ constexpr int kShift = 15;
 constexpr int kTan22 = 13573;
 }  // namespace
 
+namespace {
+
+// The 3x3 Sobel derivatives at x of the row `mid` between `up` and `down` (replicated border:
+// the caller passes the clamped rows, `l` and `r` the clamped columns).
+struct Gradient {
+    int gx;
+    int gy;
+};
+inline Gradient sobelAt(const std::uint8_t* up, const std::uint8_t* mid, const std::uint8_t* down, int x, int l, int r)
+{
+    return {(up[r] + 2 * mid[r] + down[r]) - (up[l] + 2 * mid[l] + down[l]),
+            (down[l] + 2 * down[x] + down[r]) - (up[l] + 2 * up[x] + up[r])};
+}
+
+}  // namespace
+
 void CannyDetector::detect(const cv::Mat& gray, const EdgeOptions& options, cv::Mat& edges)
 {
     CV_Assert(gray.type() == CV_8UC1);
@@ -74,32 +90,30 @@ void CannyDetector::detect(const cv::Mat& gray, const EdgeOptions& options, cv::
     const int h = gray.rows;
     const std::size_t n = std::size_t(w) * std::size_t(h);
     const int stride = w + 2;  // magnitude_ has a zero border: neighbours need no bounds checks
-    dx_.resize(n);
-    dy_.resize(n);
-    magnitude_.assign(std::size_t(stride) * std::size_t(h + 2), 0);
+    if (size_ != gray.size()) {
+        magnitude_.assign(std::size_t(stride) * std::size_t(h + 2), 0);
+        size_ = gray.size();
+    }
     state_.resize(n);
     if (stack_.capacity() < n) stack_.reserve(n);
     stack_.clear();
+    auto row = [&](int y) { return gray.ptr<std::uint8_t>(std::clamp(y, 0, h - 1)); };
 
-    // 3x3 Sobel with a replicated border, L1 magnitude. The inner columns need no clamping,
-    // which lets the compiler vectorise them.
+    // 3x3 Sobel with a replicated border, L1 magnitude only: the few pixels above the low
+    // threshold recompute their derivatives below. The inner columns need no clamping, which
+    // lets the compiler vectorise them.
     for (int y = 0; y < h; ++y) {
-        const std::uint8_t* up = gray.ptr<std::uint8_t>(y > 0 ? y - 1 : 0);
-        const std::uint8_t* mid = gray.ptr<std::uint8_t>(y);
-        const std::uint8_t* down = gray.ptr<std::uint8_t>(y < h - 1 ? y + 1 : h - 1);
-        std::int16_t* gxRow = dx_.data() + std::size_t(y) * std::size_t(w);
-        std::int16_t* gyRow = dy_.data() + std::size_t(y) * std::size_t(w);
-        std::int32_t* magRow = magnitude_.data() + std::size_t(y + 1) * std::size_t(stride) + 1;
-        auto sobel = [&](int x, int l, int r) {
-            const int gx = (up[r] + 2 * mid[r] + down[r]) - (up[l] + 2 * mid[l] + down[l]);
-            const int gy = (down[l] + 2 * down[x] + down[r]) - (up[l] + 2 * up[x] + up[r]);
-            gxRow[x] = std::int16_t(gx);
-            gyRow[x] = std::int16_t(gy);
-            magRow[x] = std::abs(gx) + std::abs(gy);
+        const std::uint8_t* up = row(y - 1);
+        const std::uint8_t* mid = row(y);
+        const std::uint8_t* down = row(y + 1);
+        std::int16_t* magRow = magnitude_.data() + std::size_t(y + 1) * std::size_t(stride) + 1;
+        auto magnitude = [&](int x, int l, int r) {
+            const Gradient g = sobelAt(up, mid, down, x, l, r);
+            return std::int16_t(std::abs(g.gx) + std::abs(g.gy));
         };
-        sobel(0, 0, std::min(1, w - 1));
-        for (int x = 1; x < w - 1; ++x) sobel(x, x - 1, x + 1);
-        if (w > 1) sobel(w - 1, w - 2, w - 1);
+        magRow[0] = magnitude(0, 0, std::min(1, w - 1));
+        for (int x = 1; x < w - 1; ++x) magRow[x] = magnitude(x, x - 1, x + 1);
+        if (w > 1) magRow[w - 1] = magnitude(w - 1, w - 2, w - 1);
     }
 
     // Non-maximum suppression along the quantised gradient direction; outside the image the
@@ -107,19 +121,29 @@ void CannyDetector::detect(const cv::Mat& gray, const EdgeOptions& options, cv::
     const int low = options.cannyLow;
     const int high = options.cannyHigh;
     std::fill(state_.begin(), state_.end(), std::uint8_t(0));
+    constexpr int kBlock = 16;  // runs of pixels at or below the low threshold are skipped a block at a time
     for (int y = 0; y < h; ++y) {
-        const std::int32_t* m0 = magnitude_.data() + std::size_t(y + 1) * std::size_t(stride) + 1;
-        const std::int32_t* mUp = m0 - stride;
-        const std::int32_t* mDown = m0 + stride;
-        const std::size_t row = std::size_t(y) * std::size_t(w);
+        const std::int16_t* m0 = magnitude_.data() + std::size_t(y + 1) * std::size_t(stride) + 1;
+        const std::int16_t* mUp = m0 - stride;
+        const std::int16_t* mDown = m0 + stride;
+        const std::uint8_t* up = row(y - 1);
+        const std::uint8_t* mid = row(y);
+        const std::uint8_t* down = row(y + 1);
+        const std::size_t rowStart = std::size_t(y) * std::size_t(w);
         for (int x = 0; x < w; ++x) {
+            if (x + kBlock <= w) {
+                bool any = false;
+                for (int k = 0; k < kBlock; ++k) any |= m0[x + k] > low;
+                if (!any) {
+                    x += kBlock - 1;
+                    continue;
+                }
+            }
             const int m = m0[x];
             if (m <= low) continue;
-            const std::size_t i = row + std::size_t(x);
-            const int xs = dx_[i];
-            const int ys = dy_[i];
-            const int ax = std::abs(xs);
-            const int ay = std::abs(ys) << kShift;
+            const Gradient g = sobelAt(up, mid, down, x, std::max(x - 1, 0), std::min(x + 1, w - 1));
+            const int ax = std::abs(g.gx);
+            const int ay = std::abs(g.gy) << kShift;
             const int tg22x = ax * kTan22;
             bool isMax;
             if (ay < tg22x) {
@@ -129,11 +153,12 @@ void CannyDetector::detect(const cv::Mat& gray, const EdgeOptions& options, cv::
                 if (ay > tg67x) {
                     isMax = m > mUp[x] && m >= mDown[x];
                 } else {
-                    const int s = (xs ^ ys) < 0 ? -1 : 1;
+                    const int s = (g.gx ^ g.gy) < 0 ? -1 : 1;
                     isMax = m > mUp[x - s] && m > mDown[x + s];
                 }
             }
             if (!isMax) continue;
+            const std::size_t i = rowStart + std::size_t(x);
             state_[i] = m > high ? 2 : 1;
             if (state_[i] == 2) stack_.push_back(int(i));
         }

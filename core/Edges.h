@@ -58,10 +58,11 @@ public:
     void detect(const cv::Mat& gray, const EdgeOptions& options, cv::Mat& edges);
 
 private:
-    std::vector<std::int32_t> magnitude_;
+    // L1 Sobel magnitude (at most 8 x 255, so 16 bits) with a one-pixel zero border; the border
+    // is written only when the image size changes, the interior on every frame.
+    std::vector<std::int16_t> magnitude_;
+    cv::Size size_;
     std::vector<std::uint8_t> state_;  // per pixel: 0 none, 1 weak candidate, 2 edge
-    std::vector<std::int16_t> dx_;
-    std::vector<std::int16_t> dy_;
     std::vector<int> stack_;
 };
 

@@ -95,6 +95,10 @@ struct OpenCvHoughOptions {
     // part, as hough.masked_centres does for the specific search; off: refused as outside the
     // processed area (thesis).
     bool maskedCentres = true;
+    // On the binary input, HoughCircles' Canny drops the rings around one-pixel specks (its high
+    // threshold raised to just below a straight border's gradient: core/SpeckFreeEdges.h), as
+    // edges.drop_specks does for the specific search; off: canny_high as set (thesis).
+    bool dropSpecks = true;
 };
 
 class OpenCvHough {

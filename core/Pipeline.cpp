@@ -2,6 +2,7 @@
 
 #include "core/BallPosition.h"
 #include "core/CandidatePrefilter.h"
+#include "core/SpeckFreeEdges.h"
 #include "core/CandidateScore.h"
 #include "core/ConfigSchema.h"
 #include "core/FrameColour.h"
@@ -112,7 +113,8 @@ void paintVotes(const cv::Mat& sums, cv::Mat& out)
 struct Pipeline::Impl {
     explicit Impl(const Config& c)
         : config(c), frontEnd(c), distanceMap(c.distanceMap), ball(c.ball),
-          hough(c.hough, frontEnd.geometry(), ball, candidatePrefilterFor(c))
+          hough(c.hough, frontEnd.geometry(), ball, candidatePrefilterFor(c)),
+          opencvOptions(speckFreeHoughOptions(c.opencvHough, c.edges))
     {
     }
 
@@ -122,6 +124,7 @@ struct Pipeline::Impl {
     BallModel ball;
     SpecificHough hough;  // holds references to frontEnd's geometry and to ball
     OpenCvHough opencvHough;
+    OpenCvHoughOptions opencvOptions;  // config.opencvHough with opencv_hough.drop_specks applied
     cv::Mat binary;
     cv::Mat edges;
     const FrameColour* colour = nullptr;  // the frame being processed, for validation
@@ -160,7 +163,7 @@ struct Pipeline::Impl {
     void searchOpenCv(PipelineResult& r, Stopwatch& clock)
     {
         const std::size_t first = r.candidates.size();
-        opencvHough.process(frontEnd.edgeSource(binary), config.opencvHough, geometry(), ball, r.candidates);
+        opencvHough.process(frontEnd.edgeSource(binary), opencvOptions, geometry(), ball, r.candidates);
         r.timings.houghMs += clock.lap();
         validateFrom(first, r);
         r.timings.validationMs += clock.lap();

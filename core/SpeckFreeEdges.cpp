@@ -21,4 +21,12 @@ EdgeOptions speckFreeCannyOptions(const EdgeOptions& options)
     return out;
 }
 
+OpenCvHoughOptions speckFreeHoughOptions(const OpenCvHoughOptions& options, const EdgeOptions& edges)
+{
+    OpenCvHoughOptions out = options;
+    if (!options.dropSpecks || edges.input != EdgeInput::Binary) return out;
+    out.cannyHigh = std::max(out.cannyHigh, 4.0 * binaryStep(edges.whiteLevel) - 1.0);
+    return out;
+}
+
 }  // namespace omnitune

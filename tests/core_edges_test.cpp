@@ -103,6 +103,51 @@ private slots:
         QCOMPARE(speckFreeCannyOptions(o).cannyLow, o.cannyLow);
     }
 
+    // opencv_hough.drop_specks: HoughCircles' high threshold follows the same step (its low one is
+    // half of it), only on the binary input and never lowered.
+    void speckFreeHoughThresholdFollowsTheSmallestStep()
+    {
+        OpenCvHoughOptions o;
+        EdgeOptions e;
+        QCOMPARE(speckFreeHoughOptions(o, e).cannyHigh, 4.0 * 255 - 1);
+        e.whiteLevel = 128;
+        QCOMPARE(speckFreeHoughOptions(o, e).cannyHigh, 4.0 * 127 - 1);
+        e.whiteLevel = 0;
+        e.input = EdgeInput::Gray;
+        QCOMPARE(speckFreeHoughOptions(o, e).cannyHigh, o.cannyHigh);
+        e.input = EdgeInput::Binary;
+        o.dropSpecks = false;
+        QCOMPARE(speckFreeHoughOptions(o, e).cannyHigh, o.cannyHigh);
+        o.dropSpecks = true;
+        o.cannyHigh = 1020;
+        QCOMPARE(speckFreeHoughOptions(o, e).cannyHigh, 1020.0);
+    }
+
+    // ... and with it HoughCircles finds on a speckled binary image exactly the circles of the same
+    // image without its specks, where canny_high 180 answers the specks with circles of their own.
+    void speckFreeHoughCirclesIgnoreSpecks()
+    {
+        cv::Mat clean(240, 320, CV_8UC1, cv::Scalar(255));
+        cv::circle(clean, cv::Point(100, 120), 12, cv::Scalar(0), cv::FILLED);
+        cv::circle(clean, cv::Point(220, 90), 8, cv::Scalar(0), cv::FILLED);
+        cv::Mat speckled = clean.clone();
+        cv::RNG rng{3};
+        for (int i = 0; i < 400; ++i) {
+            const cv::Point p(rng.uniform(2, 318), rng.uniform(2, 238));
+            if (cv::norm(p - cv::Point(100, 120)) > 16 && cv::norm(p - cv::Point(220, 90)) > 12) speckled.at<uchar>(p) = 0;
+        }
+        const OpenCvHoughOptions o = speckFreeHoughOptions(OpenCvHoughOptions{}, EdgeOptions{});
+        auto circles = [&](const cv::Mat& img, double cannyHigh) {
+            std::vector<cv::Vec3f> out;
+            cv::HoughCircles(img, out, cv::HOUGH_GRADIENT, 1, 6, cannyHigh, 8, 3, 16);
+            return out;
+        };
+        const std::vector<cv::Vec3f> reference = circles(clean, o.cannyHigh);
+        QCOMPARE(int(reference.size()), 2);
+        QVERIFY(circles(speckled, o.cannyHigh) == reference);
+        QVERIFY(circles(speckled, OpenCvHoughOptions{}.cannyHigh).size() > reference.size());
+    }
+
     // edges.input: gray finds the ball on a frame whose colours match no class (no segmentation).
     void grayInputGivesEdgesWithoutSegmentation()
     {
@@ -154,6 +199,25 @@ private slots:
         cv::Canny(img, reference, low, high, 3, false);
         QCOMPARE(cv::countNonZero(ours != reference), 0);
         QVERIFY(cv::countNonZero(ours) > 100);
+    }
+
+    // ... also on a noisy grey image of a width that is no multiple of the 16-pixel blocks the
+    // non-maximum suppression skips by, and after the detector served another image size.
+    void cannyMatchesOpenCvOnNoise()
+    {
+        cv::Mat img(83, 157, CV_8UC1);
+        cv::RNG rng{7};
+        rng.fill(img, cv::RNG::UNIFORM, 0, 256);
+        cv::GaussianBlur(img, img, cv::Size(3, 3), 0.8);
+        cv::rectangle(img, cv::Rect(40, 20, 50, 30), cv::Scalar(255), cv::FILLED);
+        CannyDetector canny;
+        cv::Mat ours;
+        canny.detect(cv::Mat(30, 40, CV_8UC1, cv::Scalar(0)), EdgeOptions{60, 180}, ours);  // another size first
+        canny.detect(img, EdgeOptions{60, 180}, ours);
+        cv::Mat reference;
+        cv::Canny(img, reference, 60, 180, 3, false);
+        QCOMPARE(cv::countNonZero(ours != reference), 0);
+        QVERIFY(cv::countNonZero(ours) > 500);
     }
 
     // The ball's edge is a closed 8-connected ring one pixel from its border: a 4-connected
