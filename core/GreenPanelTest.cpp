@@ -1,5 +1,7 @@
 #include "core/GreenPanelTest.h"
 
+#include "core/RoundHalfAway.h"
+
 #include <cmath>
 
 namespace omnitune {
@@ -16,7 +18,7 @@ bool wallAlong(cv::Point p, double dx, double dy, const BallDisc& disc, double m
         const double fx = p.x + r * dx;
         const double fy = p.y + r * dy;
         if ((fx - disc.x) * (fx - disc.x) + (fy - disc.y) * (fy - disc.y) > end2) return false;
-        const cv::Point q(int(std::lround(fx)), int(std::lround(fy)));
+        const cv::Point q(roundHalfAway(fx), roundHalfAway(fy));
         if (q == last) continue;
         last = q;
         if (!pixels.known(q)) return false;
@@ -26,13 +28,18 @@ bool wallAlong(cv::Point p, double dx, double dy, const BallDisc& disc, double m
 
 }  // namespace
 
-int enclosingDirections(cv::Point p, const BallDisc& disc, double marginPx, const PanelPixels& pixels)
+bool enclosedFrom(cv::Point p, const BallDisc& disc, double marginPx, int minDirections, const PanelPixels& pixels)
 {
     constexpr double kDiag = 0.70710678118654752;
     static const double dirs[8][2] = {{1, 0}, {kDiag, kDiag}, {0, 1}, {-kDiag, kDiag}, {-1, 0}, {-kDiag, -kDiag}, {0, -1}, {kDiag, -kDiag}};
-    int n = 0;
-    for (const auto& d : dirs) n += wallAlong(p, d[0], d[1], disc, marginPx, pixels);
-    return n;
+    // Stops as soon as the answer is known: enough walls found, or too few directions left.
+    int found = 0;
+    for (int i = 0; i < 8; ++i) {
+        if (found >= minDirections) return true;
+        if (found + (8 - i) < minDirections) return false;
+        found += wallAlong(p, dirs[i][0], dirs[i][1], disc, marginPx, pixels);
+    }
+    return found >= minDirections;
 }
 
 bool onEnclosedPanel(cv::Point p, const BallDisc& disc, double marginPx, const PanelPixels& pixels)
@@ -69,7 +76,7 @@ bool EnclosedPanels::at(cv::Point p) const
     std::int8_t& m = memo_[std::size_t(iy) * std::size_t(side_) + std::size_t(ix)];
     if (m < 0)
         m = onEnclosedPanel(p, disc_, margin_, *pixels_) ||
-                    (minDirections_ > 0 && enclosingDirections(p, disc_, margin_, *pixels_) >= minDirections_)
+                    (minDirections_ > 0 && enclosedFrom(p, disc_, margin_, minDirections_, *pixels_))
                 ? 1
                 : 0;
     return m == 1;

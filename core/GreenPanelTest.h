@@ -34,11 +34,12 @@ public:
 // ball half behind a rod keeps only its visibly enclosed panels.
 bool onEnclosedPanel(cv::Point p, const BallDisc& disc, double marginPx, const PanelPixels& pixels);
 
-// In how many of the 8 compass directions walking from the green pixel `p` meets a known pixel
-// of no field class before leaving the disc (less `marginPx`). A green panel at the ball's
-// silhouette has the ball's white inwards and on both sides (5 of 8), carpet beside a line or in
-// a line corner has it on one or two sides (3-5 of 8, at a corner).
-int enclosingDirections(cv::Point p, const BallDisc& disc, double marginPx, const PanelPixels& pixels);
+// Whether in at least `minDirections` of the 8 compass directions walking from the green pixel `p`
+// meets a known pixel of no field class before leaving the disc (less `marginPx`). A green panel
+// at the ball's silhouette has the ball's white inwards and on both sides (5 of 8), carpet beside
+// a line or in a line corner has it on one or two sides (3-5 of 8, at a corner). Walks only until
+// the answer is known.
+bool enclosedFrom(cv::Point p, const BallDisc& disc, double marginPx, int minDirections, const PanelPixels& pixels);
 
 // onEnclosedPanel (or at least minDirections enclosing directions, 0: not asked) for one candidate, memoised per pixel of the disc's bounding box: the colour
 // tests ask about the same pixels many times (every ray step, the square). Reset per candidate;

@@ -1,6 +1,7 @@
 // The binary (green / non-green) image and the Canny edge detector.
 #include "DrawnScene.h"
 #include "core/ConfigSchema.h"
+#include "core/RoundHalfAway.h"
 #include "core/SpeckFreeEdges.h"
 
 #include <QtTest>
@@ -218,6 +219,20 @@ private slots:
         cv::Canny(img, reference, 60, 180, 3, false);
         QCOMPARE(cv::countNonZero(ours != reference), 0);
         QVERIFY(cv::countNonZero(ours) > 500);
+    }
+
+    // The validation's pixel walks round with roundHalfAway instead of std::lround: the same
+    // integer for halves, near-halves and negative coordinates.
+    void roundHalfAwayIsLround()
+    {
+        const double values[] = {0.0, 0.5, -0.5, 1.5, -1.5, 2.4999999999999996, 0.49999999999999994, -0.49999999999999994,
+                                 3.5000000000000004, -7.25, 639.5, -639.5, 1e9 + 0.5};
+        for (double v : values) QCOMPARE(roundHalfAway(v), int(std::lround(v)));
+        cv::RNG rng{11};
+        for (int i = 0; i < 100000; ++i) {
+            const double v = rng.uniform(-700.0, 700.0);
+            QCOMPARE(roundHalfAway(v), int(std::lround(v)));
+        }
     }
 
     // The ball's edge is a closed 8-connected ring one pixel from its border: a 4-connected
