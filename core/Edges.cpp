@@ -65,9 +65,6 @@ namespace {
 // tan(22.5 deg) in 15-bit fixed point, as in OpenCV's Canny, so that directions match it.
 constexpr int kShift = 15;
 constexpr int kTan22 = 13573;
-}  // namespace
-
-namespace {
 
 // The 3x3 Sobel derivatives at x of the row `mid` between `up` and `down` (replicated border:
 // the caller passes the clamped rows, `l` and `r` the clamped columns).

@@ -2,12 +2,12 @@
 
 #include "core/BallPosition.h"
 #include "core/CandidatePrefilter.h"
-#include "core/SpeckFreeEdges.h"
 #include "core/CandidateScore.h"
 #include "core/ConfigSchema.h"
 #include "core/FrameColour.h"
 #include "core/FrontEnd.h"
 #include "core/RefusalRecentre.h"
+#include "core/SpeckFreeEdges.h"
 #include "core/Stopwatch.h"
 
 #include <opencv2/imgproc.hpp>

@@ -10,14 +10,19 @@ int binaryStep(int whiteLevel)
     return white == 0 ? 255 : std::min(white, 255 - white);
 }
 
+namespace {
+
+// Just below a straight border's gradient: 4 steps (|dx| = 1 + 2 + 1 steps), less one.
+int speckFreeThreshold(int whiteLevel) { return 4 * binaryStep(whiteLevel) - 1; }
+
+}  // namespace
+
 EdgeOptions speckFreeCannyOptions(const EdgeOptions& options)
 {
     EdgeOptions out = options;
     if (!options.dropSpecks || options.input != EdgeInput::Binary) return out;
-    // A straight border is 4 steps (|dx| = 1 + 2 + 1 steps); one below keeps it.
-    const int borderGradient = 4 * binaryStep(options.whiteLevel);
-    out.cannyLow = std::max(out.cannyLow, borderGradient - 1);
-    out.cannyHigh = std::max(out.cannyHigh, borderGradient - 1);
+    out.cannyLow = std::max(out.cannyLow, speckFreeThreshold(options.whiteLevel));
+    out.cannyHigh = std::max(out.cannyHigh, speckFreeThreshold(options.whiteLevel));
     return out;
 }
 
@@ -25,7 +30,7 @@ OpenCvHoughOptions speckFreeHoughOptions(const OpenCvHoughOptions& options, cons
 {
     OpenCvHoughOptions out = options;
     if (!options.dropSpecks || edges.input != EdgeInput::Binary) return out;
-    out.cannyHigh = std::max(out.cannyHigh, 4.0 * binaryStep(edges.whiteLevel) - 1.0);
+    out.cannyHigh = std::max(out.cannyHigh, double(speckFreeThreshold(edges.whiteLevel)));
     return out;
 }
 
