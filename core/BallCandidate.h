@@ -44,6 +44,11 @@ struct ValidationScores {
     // and the expected circle's border, px (-1 when no circle was fitted).
     double fitBorderGapPx = -1.0;
     double hintPct = 0.0;        // % of processed square pixels of validation.ball_hint_class
+    // Which scores were measured. A pipeline that does not explain its rejections
+    // (Pipeline::setExplainRejections) leaves a candidate the area already refused unscored, and
+    // one that failed a colour test without its shape: their zeros mean "not measured".
+    bool squareMeasured = false;  // nonGreenPct, nonBlackPct, hintPct
+    bool shapeMeasured = false;   // circularity, border, run-on and fit scores
 };
 
 struct BallCandidate {

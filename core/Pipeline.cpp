@@ -128,6 +128,8 @@ struct Pipeline::Impl {
     cv::Mat binary;
     cv::Mat edges;
     const FrameColour* colour = nullptr;  // the frame being processed, for validation
+    bool explainRejections = false;       // setExplainRejections
+    bool explainThisFrame = false;        // explainRejections, or stage images wanted
 
     const Geometry& geometry() const { return frontEnd.geometry(); }
 
@@ -137,7 +139,7 @@ struct Pipeline::Impl {
         if (end == 0) end = r.candidates.size();
         for (std::size_t i = first; i < end; ++i)
             validateCandidate(r.candidates[i], r.classes, edges, geometry(), ball, config.validation, colour,
-                              frontEnd.roles());
+                              frontEnd.roles(), !explainThisFrame);
     }
 
     // Thesis 4.1: candidates from the specific Hough transform, validated.
@@ -206,10 +208,14 @@ void Pipeline::setConfig(const Config& config)
 {
     const auto problems = checkConfig(config);
     if (!problems.empty()) throw std::invalid_argument(problems.front().toString());
-    impl_ = std::make_unique<Impl>(config);  // only a fully built pipeline replaces the old one
+    auto built = std::make_unique<Impl>(config);  // only a fully built pipeline replaces the old one
+    built->explainRejections = impl_ && impl_->explainRejections;
+    impl_ = std::move(built);
 }
 
 const Config& Pipeline::config() const { return impl_->config; }
+
+void Pipeline::setExplainRejections(bool on) { impl_->explainRejections = on; }
 
 void Pipeline::reset() {}
 
@@ -229,6 +235,7 @@ void Pipeline::process(const cv::Mat& frame, PixelFormat format, PipelineResult&
     clock.lap();  // the front end timed its own stages
     const FrameColour colour(frame, format);
     p.colour = &colour;
+    p.explainThisFrame = p.explainRejections || wantStageImages;
     p.searchBall(r, clock);
     p.colour = nullptr;
     const int best = chooseCandidate(r.candidates, p.config.hough.rankByScore);

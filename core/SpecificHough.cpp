@@ -294,6 +294,7 @@ bool SpecificHough::passesPrefilter(const cv::Mat& binary, int x, int y, std::in
                          : why;
         c.scores.nonGreenPct = shares.nonGreenPct;
         c.scores.nonBlackPct = shares.nonBlackPct;
+        c.scores.squareMeasured = why != RejectReason::OutsideArea;
         dropped_.push_back(c);
     }
     return false;

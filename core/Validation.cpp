@@ -508,10 +508,12 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
     }
     ValidationScores s;
     scoreSquare(circle, squareSide, s);
+    s.squareMeasured = true;
     const bool hintKnown = circle.hint != ColorClass::Unknown;  // as firstFailedTest's caller
     if (stopAtColour && failedColourTest(s, options, hintKnown) != RejectReason::None) return s;
     scoreCircularity(circle, s);
     scoreRunOn(circle, s);
+    s.shapeMeasured = true;
     return s;
 }
 
@@ -532,6 +534,10 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
                        const ColourRoles& roles, bool stopAtColour)
 {
     CV_Assert(classes.type() == CV_8UC1 && edges.type() == CV_8UC1 && classes.size() == edges.size());
+    if (stopAtColour && c.rejected != RejectReason::None) {
+        c.scores = ValidationScores{};  // already out (outside the area, too large): nothing to explain
+        return;
+    }
     const int square = ball.squareSizeAt(c.distancePx, imageAngleAt(geometry, c.x, c.y));
     c.scores = scoreCircle(c.x, c.y, c.expectedRadiusPx, square, classes, edges, geometry, options, colour, roles,
                            ball.squashAt(c.distancePx), stopAtColour);

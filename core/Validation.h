@@ -288,8 +288,10 @@ double requiredCircularityPct(const BallCandidate& candidate, const ValidationOp
 // thesis order non-green, non-black, circularity, then our run-on test). `classes` holds colour
 // class ids, `edges` the edge image, `colour` (optional) the frame's colours for carpetByColour,
 // `roles` what the ids are: "green" is every field class, "black" every black class.
-// `stopAtColour`: when the square's colour tests fail, the shape is not measured (its scores
-// stay 0; the verdict is the same): for callers that drop what is rejected (the recentre).
+// `stopAtColour`: when the square's colour tests fail, the shape is not measured, and a candidate
+// already rejected (outside the area, too large) is not scored at all (the scores stay 0 and say
+// so in squareMeasured / shapeMeasured; the verdict is the same): for callers that drop or do
+// not explain what is rejected (the recentre, the robot).
 void validateCandidate(BallCandidate& candidate, const cv::Mat& classes, const cv::Mat& edges,
                        const Geometry& geometry, const BallModel& ball, const ValidationOptions& options,
                        const FrameColour* colour = nullptr, const ColourRoles& roles = defaultColourRoles(),

@@ -281,6 +281,13 @@ private slots:
             QVERIFY2(csv.at(i, "error").isEmpty(), qPrintable(csv.rows[i].join(',')));
             QVERIFY(csv.number(i, "time_ms") > 0);
             visible += truth.at(i, "ball_visible") == "1";
+            // The robot's run does not measure the shape of what a colour test rejected: the
+            // field is empty, not a 0 % circularity.
+            const QString rejected = csv.at(i, "rejected");
+            if (rejected == "non-green" || rejected == "non-black")
+                QVERIFY2(csv.at(i, "circularity_pct").isEmpty(), qPrintable(csv.rows[i].join(',')));
+            if (rejected == "accepted" || rejected == "circularity")
+                QVERIFY2(!csv.at(i, "circularity_pct").isEmpty(), qPrintable(csv.rows[i].join(',')));
             if (csv.at(i, "found") != "1") continue;
             QCOMPARE(truth.at(i, "ball_visible"), QString("1"));  // no ball where there is none
             const double dx = csv.number(i, "px") - truth.number(i, "px");

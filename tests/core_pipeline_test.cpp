@@ -106,6 +106,64 @@ private slots:
         QCOMPARE(r.candidates[std::size_t(r.detection.candidate)].source, CandidateSource::OpenCvHough);
     }
 
+    // Off (the robot): what the area or a colour test rejected keeps only the scores measured
+    // before it failed, and says so; on (or with stage images): every score. Verdicts and the
+    // detection are the same either way.
+    void rejectionsExplainedOnlyWhenAsked()
+    {
+        Config c;
+        c.algorithm = Algorithm::Combined;
+        c.opencvHough.joinRanking = true;  // OpenCV's circles too, some beyond their expected radius
+        cv::Mat frame = greenField(c);
+        const cv::Point ball = drawBall(frame, c, 150, 20);
+        cv::line(frame, pointAt(c, 60, 200), pointAt(c, 240, 200), kWhite, 4);
+        cv::circle(frame, pointAt(c, 130, 280), 18, kBlack, cv::FILLED);
+        Pipeline robot(c);
+        Pipeline explaining(c);
+        explaining.setExplainRejections(true);
+        explaining.setConfig(c);  // the setting outlives a new config
+        PipelineResult fast;
+        PipelineResult full;
+        PipelineResult staged;
+        robot.process(frame, PixelFormat::Bgr8, fast);
+        explaining.process(frame, PixelFormat::Bgr8, full);
+        robot.process(frame, PixelFormat::Bgr8, staged, true);
+        QVERIFY(fast.detection.found);
+        QVERIFY(std::hypot(fast.detection.px - ball.x, fast.detection.py - ball.y) <= 2.0);
+        QCOMPARE(full.detection.candidate, fast.detection.candidate);
+        QCOMPARE(full.candidates.size(), fast.candidates.size());
+        QCOMPARE(staged.candidates.size(), fast.candidates.size());
+        int shapeOfColourRejectsFast = 0;
+        int shapeOfColourRejectsFull = 0;
+        int colourRejected = 0;
+        for (std::size_t i = 0; i < fast.candidates.size(); ++i) {
+            const BallCandidate& f = fast.candidates[i];
+            QCOMPARE(f.rejected, full.candidates[i].rejected);
+            const bool byColour = f.rejected == RejectReason::NonGreen || f.rejected == RejectReason::NonBlack;
+            const bool byArea = f.rejected == RejectReason::OutsideArea || f.rejected == RejectReason::RadiusTooLarge;
+            colourRejected += byColour;
+            for (const PipelineResult* r : {&full, &staged}) {
+                const ValidationScores& s = r->candidates[i].scores;
+                // What the fast run measured, the explaining runs measured alike.
+                QVERIFY(s.squareMeasured || !f.scores.squareMeasured);
+                QVERIFY(s.shapeMeasured || !f.scores.shapeMeasured);
+                if (f.scores.squareMeasured) QCOMPARE(s.nonGreenPct, f.scores.nonGreenPct);
+                if (f.scores.shapeMeasured) QCOMPARE(s.circularityPct, f.scores.circularityPct);
+                if (r == &full && byColour) shapeOfColourRejectsFull += s.shapeMeasured;
+            }
+            if (byColour) {
+                QVERIFY(f.scores.squareMeasured);
+                shapeOfColourRejectsFast += f.scores.shapeMeasured;
+                if (!f.scores.shapeMeasured) QCOMPARE(f.scores.circularityPct, 0.0);
+            }
+            if (byArea) QVERIFY(!f.scores.squareMeasured);
+            if (f.rejected == RejectReason::None) QVERIFY(f.scores.shapeMeasured);
+        }
+        QVERIFY(colourRejected > 0);  // the line and the black disc
+        QCOMPARE(shapeOfColourRejectsFast, 0);
+        QVERIFY(shapeOfColourRejectsFull > 0);
+    }
+
     void wrongFrameIsAClearError_data()
     {
         QTest::addColumn<int>("w");

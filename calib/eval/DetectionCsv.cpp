@@ -28,6 +28,14 @@ const BallCandidate* decisiveCandidate(const PipelineResult& r)
     return best;
 }
 
+// A percentage as the CSV writes it: one decimal.
+std::string percentField(double pct)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f", pct);
+    return buf;
+}
+
 }  // namespace
 
 std::string csvField(const std::string& s)
@@ -52,10 +60,12 @@ std::string detectionCsvRow(int frame, const PipelineResult& r)
                   d.radiusPx, d.xM, d.yM, r.timings.totalMs, r.candidates.size());
     std::string row = buf;
     if (const BallCandidate* c = decisiveCandidate(r)) {
-        std::snprintf(buf, sizeof buf, ",%.1f,%.1f,%.1f,%s,%s", c->scores.nonGreenPct, c->scores.nonBlackPct,
-                      c->scores.circularityPct, std::string(candidateSourceName(c->source)).c_str(),
-                      csvField(std::string(rejectReasonName(c->rejected))).c_str());
-        row += buf;
+        // A score the pipeline did not measure (Pipeline::setExplainRejections) is left empty.
+        const auto score = [](bool measured, double pct) { return measured ? percentField(pct) : std::string(); };
+        const ValidationScores& s = c->scores;
+        row += "," + score(s.squareMeasured, s.nonGreenPct) + "," + score(s.squareMeasured, s.nonBlackPct) + "," +
+               score(s.shapeMeasured, s.circularityPct) + "," + std::string(candidateSourceName(c->source)) + "," +
+               csvField(std::string(rejectReasonName(c->rejected)));
     } else {
         row += ",,,,,";
     }

@@ -131,7 +131,10 @@ public:
                 if (auto why = applyConfigOverride(config, o)) throw std::invalid_argument(variant.name + ": " + *why);
             auto& slot = pipelines_[vi][configKey(config)];
             try {
-                if (!slot) slot = std::make_unique<Pipeline>(config);
+                if (!slot) {
+                    slot = std::make_unique<Pipeline>(config);
+                    slot->setExplainRejections(options_.recordMisses);
+                }
             } catch (const std::exception& e) {
                 throw std::invalid_argument(cr.name + " (" + variant.name + "): the fitted config is refused: " + e.what());
             }

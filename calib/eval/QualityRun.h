@@ -109,6 +109,9 @@ struct QualityRunOptions {
     // default colours (the matrix as the gate runs it).
     int autoColourFrames = 0;
     // Keep a MissedFrame (with its crop) for every missed ball frame (omnitune-eval --miss-list).
+    // Its pipelines then also score what they reject (Pipeline::setExplainRejections), so each
+    // miss shows the scores of the candidate at the ball; per-frame times are the robot's only
+    // without it.
     bool recordMisses = false;
 };
 
