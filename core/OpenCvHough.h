@@ -68,8 +68,12 @@ struct OpenCvHoughOptions {
     // which the expected radius varies by at most this ratio, and cv::HoughCircles runs in each
     // with the ring's radius range (x min/max_radius_ratio). 0: one search over
     // minRadius..maxRadius (thesis). Optics matrix, 2 frames/cell: OpenCV 33.0 -> 42.2 % with
-    // 5 -> 4 false-positive frames (span 1.5: 36.8 %; 1.25 with 3 circles per ring 44.4 % but 7).
-    double bandRadiusSpan = 1.25;
+    // 5 -> 4 false-positive frames (span 1.25 then). Since (4 frames/cell, seeds 1-4, 2026-12-04)
+    // 1.5 finds more than 1.25: OpenCV 1745 -> 1770 of 3558 balls (false-positive frames 4 -> 5
+    // of 3840), combined 2543 -> 2545 (18 -> 17), specific the same, and cv::HoughCircles reads
+    // ~40 % fewer pixels (5 rings instead of 9 on the 480x480 spherical mirror). 1.6: 1774 but 8
+    // false-positive frames; 1.75: 1740.
+    double bandRadiusSpan = 1.5;
     // Per ring: votes a centre needs per px of the ring's smallest expected circumference (never
     // below bandAccThreshold; 0: accThreshold everywhere: at span 1.5, 0.5 found 29.1 % of the
     // balls against 36.8 % with 0), min_dist as a multiple of that radius, and the plausible circles

@@ -51,7 +51,7 @@ private slots:
             QVERIFY(!b.roi.empty());
         }
         const int rings = int(bands.size());
-        c.opencvHough.bandRadiusSpan = 1.6;
+        c.opencvHough.bandRadiusSpan = 2.0;
         openCvRadiusBands(geometry, ball, c.opencvHough, bands);
         QVERIFY(int(bands.size()) < rings);  // a wider span: fewer rings
         c.opencvHough.bandRadiusSpan = 0;  // thesis: one search
