@@ -3,6 +3,7 @@
 #include "DrawnCandidate.h"
 #include "core/ConfigSchema.h"
 #include "core/FrameColour.h"
+#include "core/GreenPanelTest.h"
 #include "core/Validation.h"
 
 #include <opencv2/imgproc.hpp>
@@ -518,6 +519,10 @@ private slots:
     void ballHintPassesTheColourTests()
     {
         Config c;
+        // The green half stops 2 px inside the border; at the default 1 px green-panel margin its
+        // walks would reach that orange rim and make it an enclosed panel of the ball, whose rays
+        // then end on no border into carpet. This test is about the hint, not the panels.
+        c.validation.greenPanelMarginPx = 2.0;
         cv::Mat frame = greenField(c);
         const cv::Point p = drawBall(frame, c, 130, 300);
         const int r = int(std::lround(expectedRadius(c, 130)));
@@ -666,6 +671,30 @@ private slots:
         five.validation.greenPanelMinDirections = 5;
         const BallCandidate loose = validateFrame(five, frame, p);
         QVERIFY2(loose.scores.nonGreenPct > dflt.scores.nonGreenPct, qPrintable(verdict(loose)));
+    }
+
+    // A green panel near the silhouette, with only a thin rim of the ball's white beyond it
+    // (1.5 px here): the walk outwards must reach that rim. The default margin (1 px) does; the
+    // earlier 2 px stopped the walk short and called the panel carpet (optics matrix, seeds 1-4:
+    // +15 balls combined, +12 specific, no false-positive frame more for either).
+    void panelWithAThinWhiteRimIsEnclosed()
+    {
+        struct Rim : PanelPixels {
+            bool known(cv::Point p) const override { return std::hypot(p.x, p.y) <= 20; }
+            // White from 8.5 px to the border at 10; field (panel, then carpet) elsewhere.
+            bool field(cv::Point p) const override
+            {
+                const double d = std::hypot(p.x, p.y);
+                return d < 8.5 || d > 10.0;
+            }
+        } pixels;
+        const BallDisc disc{0, 0, 10};
+        const double margin = ValidationOptions{}.greenPanelMarginPx;
+        QVERIFY(onEnclosedPanel({6, 0}, disc, margin, pixels));
+        QVERIFY(onEnclosedPanel({0, -6}, disc, margin, pixels));
+        QVERIFY(!onEnclosedPanel({6, 0}, disc, 2.0, pixels));
+        // The carpet beyond the border is never a panel, whatever the margin.
+        QVERIFY(!onEnclosedPanel({12, 0}, disc, margin, pixels));
     }
 };
 
