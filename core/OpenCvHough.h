@@ -71,8 +71,9 @@ struct OpenCvHoughOptions {
     // 5 -> 4 false-positive frames (span 1.25 then). Since (4 frames/cell, seeds 1-4, 2026-12-04)
     // 1.5 finds more than 1.25: OpenCV 1745 -> 1770 of 3558 balls (false-positive frames 4 -> 5
     // of 3840), combined 2543 -> 2545 (18 -> 17), specific the same, and cv::HoughCircles reads
-    // ~40 % fewer pixels (5 rings instead of 9 on the 480x480 spherical mirror). 1.6: 1774 but 8
-    // false-positive frames; 1.75: 1740.
+    // ~40 % fewer pixels (5 rings instead of 9 on the 480x480 spherical mirror). Fewer on the
+    // gate's smaller matrix (OpenCV 224 -> 222 of 444, combined the same) and on the bench's 84
+    // hard frames (OpenCV alone 46.4 -> 40.5 %). 1.6: 1774 but 8 false-positive frames; 1.75: 1740.
     double bandRadiusSpan = 1.5;
     // Per ring: votes a centre needs per px of the ring's smallest expected circumference (never
     // below bandAccThreshold; 0: accThreshold everywhere: at span 1.5, 0.5 found 29.1 % of the

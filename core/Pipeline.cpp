@@ -129,7 +129,6 @@ struct Pipeline::Impl {
     cv::Mat edges;
     const FrameColour* colour = nullptr;  // the frame being processed, for validation
     bool explainRejections = false;       // setExplainRejections
-    bool explainThisFrame = false;        // explainRejections, or stage images wanted
 
     const Geometry& geometry() const { return frontEnd.geometry(); }
 
@@ -139,7 +138,7 @@ struct Pipeline::Impl {
         if (end == 0) end = r.candidates.size();
         for (std::size_t i = first; i < end; ++i)
             validateCandidate(r.candidates[i], r.classes, edges, geometry(), ball, config.validation, colour,
-                              frontEnd.roles(), !explainThisFrame);
+                              frontEnd.roles(), !explainRejections);
     }
 
     // Thesis 4.1: candidates from the specific Hough transform, validated.
@@ -235,7 +234,6 @@ void Pipeline::process(const cv::Mat& frame, PixelFormat format, PipelineResult&
     clock.lap();  // the front end timed its own stages
     const FrameColour colour(frame, format);
     p.colour = &colour;
-    p.explainThisFrame = p.explainRejections || wantStageImages;
     p.searchBall(r, clock);
     p.colour = nullptr;
     const int best = chooseCandidate(r.candidates, p.config.hough.rankByScore);

@@ -26,11 +26,13 @@ public:
     // A frame of the wrong size or type sets result.error and leaves the rest empty.
     void process(const cv::Mat& frame, PixelFormat format, PipelineResult& result, bool wantStageImages = false);
 
-    // Whether every candidate's scores are measured, also those the area or a colour test already
-    // rejected (their shape, for the window's tooltips and the evaluation's miss lists). Off, as
-    // on the robot, such candidates keep only what was measured before they failed
-    // (ValidationScores::squareMeasured / shapeMeasured): the busiest optics-matrix frames do
-    // 2-13 % less work, the verdicts are the same. A call that wants stage images explains too.
+    // Whether validation also scores what it rejects without needing to: OpenCV circles refused
+    // before validation (centre outside the processed area, implausible radius), and the shape
+    // of a candidate that failed a colour test (for the window's tooltips and the evaluation's
+    // miss lists). Off, as on the robot, such candidates keep only what was measured before they
+    // failed (ValidationScores::squareMeasured / shapeMeasured): the busiest optics-matrix frames
+    // do 2-13 % less work, the verdicts are the same. The candidate prefilter's listed refusals
+    // (hough.prefilter_*) are never validated either way.
     void setExplainRejections(bool on);
 
     // Forgets running statistics (none today); here so every stage has the same shape.

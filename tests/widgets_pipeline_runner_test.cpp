@@ -63,6 +63,13 @@ private slots:
         QCOMPARE(first->sourceTag, quint64(7));
         QVERIFY(source->readOn.load() != nullptr && source->readOn.load() != QThread::currentThread());
         QVERIFY(!first->result.stages.acquired.empty());
+        // The window explains every verdict (Pipeline::setExplainRejections): what a colour test
+        // refused in validation still has its shape measured for the candidate table.
+        int shapedColourRefusals = 0;
+        for (const BallCandidate& c : first->result.candidates)
+            shapedColourRefusals += (c.rejected == RejectReason::NonGreen || c.rejected == RejectReason::NonBlack) &&
+                                    c.scores.shapeMeasured;
+        QVERIFY(shapedColourRefusals > 0);
 
         config.edges.cannyHigh = 200;  // a threshold edit re-runs the frame without decoding it again
         const auto second = runOnce(runner, source, 7, 0, config, 2);

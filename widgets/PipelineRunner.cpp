@@ -84,6 +84,7 @@ private:
                 outline_ = std::make_shared<const Polylines>(maskOutline(r.config.mask));
                 tint_ = maskTint(r.config.mask);
                 pipeline_ = std::make_unique<Pipeline>(r.config);
+                pipeline_->setExplainRejections(true);  // the candidate table explains every verdict
                 generation_ = r.generation;
             }
             run->maskOutline = outline_;

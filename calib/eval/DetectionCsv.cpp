@@ -12,7 +12,10 @@ const BallCandidate* decisiveCandidate(const PipelineResult& r)
     if (r.detection.found) return &r.candidates[std::size_t(r.detection.candidate)];
     const BallCandidate* best = nullptr;
     auto rank = [](const BallCandidate& c) {
-        const double s = c.scores.nonGreenPct + c.scores.nonBlackPct + c.scores.circularityPct;
+        // Within a tier, the scores every candidate of that tier has measured: a colour refusal's
+        // shape is measured only when the pipeline explains its rejections.
+        const bool shape = c.rejected != RejectReason::NonGreen && c.rejected != RejectReason::NonBlack;
+        const double s = c.scores.nonGreenPct + c.scores.nonBlackPct + (shape ? c.scores.circularityPct : 0.0);
         switch (c.rejected) {
         case RejectReason::RunsOn:
         case RejectReason::LineJunction:
