@@ -19,6 +19,7 @@ BallCandidate roundish(double nonBlackPct, double circularityPct)
     c.scores.nonGreenPct = 97.6;
     c.scores.nonBlackPct = nonBlackPct;
     c.scores.circularityPct = circularityPct;
+    c.scores.squareMeasured = c.scores.shapeMeasured = true;
     c.rejected = RejectReason::Circularity;
     return c;
 }
@@ -50,6 +51,23 @@ private slots:
         QVERIFY2(text.contains(line), qPrintable(text));
         QCOMPARE(text.contains("<b>" + line + "</b>"), failed);
         QVERIFY2(text.contains("radial area 3"), qPrintable(text));
+    }
+
+    // A prefilter refusal, or a colour refusal on a pipeline that does not explain: the shape
+    // was never measured, so the label shows "-" (as the table does), not a failing 0.
+    void unmeasuredShapeIsADash()
+    {
+        BallCandidate c = roundish(100, 0);
+        c.scores.nonGreenPct = 41.2;
+        c.scores.shapeMeasured = false;
+        c.rejected = RejectReason::NonGreen;
+        QCOMPARE(candidateLabel(c), QStringLiteral("A3 41/100/-"));
+        const QString text = candidateExplanation(c, ValidationOptions{});
+        QVERIFY2(text.contains("circularity not measured"), qPrintable(text));
+        QVERIFY2(!text.contains("<b>circularity"), qPrintable(text));
+        QVERIFY2(text.contains("<b>non-green 41 %"), qPrintable(text));
+        c.scores.squareMeasured = false;
+        QCOMPARE(candidateLabel(c), QStringLiteral("A3 -/-/-"));
     }
 };
 

@@ -26,6 +26,28 @@ BallCandidate makeCandidate(CandidateSource source, int area, int x, int y, Reje
     return c;
 }
 
+// Scores as validation leaves them: every test measured, or only the colour square (a prefilter
+// refusal, or a colour refusal on the robot, which stops there).
+ValidationScores measured(double nonGreen, double nonBlack, double circularity, double runOn)
+{
+    ValidationScores s;
+    s.nonGreenPct = nonGreen;
+    s.nonBlackPct = nonBlack;
+    s.circularityPct = circularity;
+    s.runOnPct = runOn;
+    s.squareMeasured = s.shapeMeasured = true;
+    return s;
+}
+
+ValidationScores colourOnly(double nonGreen, double nonBlack)
+{
+    ValidationScores s;
+    s.nonGreenPct = nonGreen;
+    s.nonBlackPct = nonBlack;
+    s.squareMeasured = true;
+    return s;
+}
+
 // One accepted specific-Hough ball and one OpenCV circle rejected by circularity.
 PipelineResult twoCandidates()
 {
@@ -35,12 +57,12 @@ PipelineResult twoCandidates()
     ball.expectedRadiusPx = 7.26;
     ball.distancePx = 131.04;
     ball.accumulator = 412;
-    ball.scores = {96.44, 88.06, 91.67, 0.4};
+    ball.scores = measured(96.44, 88.06, 91.67, 0.4);
     BallCandidate line = makeCandidate(CandidateSource::OpenCvHough, -1, 90, 401, RejectReason::Circularity);
     line.radiusPx = 11.5;
     line.expectedRadiusPx = 10.92;
     line.distancePx = 212.3;
-    line.scores = {91.2, 77.7, 41.66, 2.1};
+    line.scores = measured(91.2, 77.7, 41.66, 2.1);
     r.candidates = {ball, line};
     r.detection.found = true;
     r.detection.candidate = 0;
@@ -84,6 +106,7 @@ private slots:
     void candidateAccessor();
     void prefilterRefusalsShowNoShape();
     void recentredRefusalsShowTheirShape();
+    void unmeasuredScoresShowADash();
 };
 
 void CandidateModelTest::resetsUnderModelTester()
@@ -247,7 +270,7 @@ void CandidateModelTest::prefilterRefusalsShowNoShape()
 {
     PipelineResult r = twoCandidates();
     BallCandidate refused = makeCandidate(CandidateSource::SpecificHough, 3, 200, 100, RejectReason::NonGreen);
-    refused.scores = {40.0, 100.0, 0.0, 0.0};
+    refused.scores = colourOnly(40.0, 100.0);
     r.candidates.insert(r.candidates.begin() + 1, refused);  // before OpenCV's circle
     r.hough.prefilterListed = 1;
     CandidateTableModel model;
@@ -272,9 +295,9 @@ void CandidateModelTest::recentredRefusalsShowTheirShape()
     PipelineResult r = twoCandidates();
     r.candidates[0].rejected = RejectReason::NotChosen;
     BallCandidate moved = makeCandidate(CandidateSource::SpecificHough, 4, 240, 130, RejectReason::None);
-    moved.scores = {81.5, 100.0, 88.34, 0.0};
+    moved.scores = measured(81.5, 100.0, 88.34, 0.0);
     BallCandidate refused = makeCandidate(CandidateSource::SpecificHough, 5, 200, 100, RejectReason::NonGreen);
-    refused.scores = {40.0, 100.0, 0.0, 0.0};
+    refused.scores = colourOnly(40.0, 100.0);
     r.candidates.insert(r.candidates.begin() + 1, {moved, refused});  // before OpenCV's circle
     r.hough.prefilterListed = 1;
     r.hough.recentreTried = 1;
@@ -293,6 +316,28 @@ void CandidateModelTest::recentredRefusalsShowTheirShape()
     QVERIFY(!model.index(1, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Not validated"));
     QCOMPARE(model.index(2, Col::CircularityColumn).data().toString(), QString("-"));
     QVERIFY(!model.index(2, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Recentred"));
+}
+
+// A pipeline that does not explain its rejections stops at a failed colour test: that row's shape
+// was never measured and shows "-" like a prefilter refusal's (not a 0 that reads as a failure);
+// an OpenCV circle refused before validation has no colour scores either.
+void CandidateModelTest::unmeasuredScoresShowADash()
+{
+    PipelineResult r = twoCandidates();
+    r.candidates[1].rejected = RejectReason::NonGreen;
+    r.candidates[1].scores = colourOnly(31.0, 100.0);
+    BallCandidate outside = makeCandidate(CandidateSource::OpenCvHough, -1, 5, 5, RejectReason::OutsideArea);
+    r.candidates.push_back(outside);
+    CandidateTableModel model;
+    model.setResult(r, Config{});
+    QVERIFY(!model.isPrefiltered(1));
+    QCOMPARE(model.index(1, Col::NonGreenColumn).data().toString(), QString("31.0"));
+    QCOMPARE(model.index(1, Col::CircularityColumn).data().toString(), QString("-"));
+    QCOMPARE(model.index(1, Col::RunOnColumn).data().toString(), QString("-"));
+    QVERIFY(!model.index(1, Col::CircularityColumn).data(CandidateTableModel::SortRole).isValid());
+    QCOMPARE(model.index(2, Col::NonGreenColumn).data().toString(), QString("-"));
+    QCOMPARE(model.index(2, Col::NonBlackColumn).data().toString(), QString("-"));
+    QCOMPARE(model.index(0, Col::CircularityColumn).data().toString(), QString("91.7"));
 }
 
 QTEST_MAIN(CandidateModelTest)

@@ -120,6 +120,7 @@ private slots:
             k.y = near(rng);
             k.radiusPx = 6;
             k.scores = {98, 100, 96, 0, 0};
+            k.scores.squareMeasured = k.scores.shapeMeasured = true;
             k.rejected = i == 0 ? RejectReason::None : RejectReason::Circularity;
             overlay->candidates.push_back(k);
         }

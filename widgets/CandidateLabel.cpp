@@ -12,12 +12,18 @@ QString areaName(const BallCandidate& k) { return k.area >= 0 ? QStringLiteral("
 
 QString pct(double v) { return QString::number(v, 'f', 0); }
 
+// A test validation never ran (a prefilter refusal's shape, a colour refusal's shape on the robot)
+// shows "-", as in the candidate table, not a 0 that reads as a failure.
+QString measured(double v, bool wasMeasured) { return wasMeasured ? pct(v) : QStringLiteral("-"); }
+
 }  // namespace
 
 QString candidateLabel(const BallCandidate& k)
 {
-    return QStringLiteral("%1 %2/%3/%4").arg(areaName(k), pct(k.scores.nonGreenPct), pct(k.scores.nonBlackPct),
-                                             pct(k.scores.circularityPct));
+    const ValidationScores& s = k.scores;
+    return QStringLiteral("%1 %2/%3/%4").arg(areaName(k), measured(s.nonGreenPct, s.squareMeasured),
+                                             measured(s.nonBlackPct, s.squareMeasured),
+                                             measured(s.circularityPct, s.shapeMeasured));
 }
 
 QString candidateExplanation(const BallCandidate& k, const ValidationOptions& t)
@@ -27,15 +33,16 @@ QString candidateExplanation(const BallCandidate& k, const ValidationOptions& t)
                                 ? tr("accepted")
                                 : tr("rejected: %1").arg(QString::fromUtf8(rejectReasonName(k.rejected).data(),
                                                                             int(rejectReasonName(k.rejected).size())));
-    auto line = [](const QString& name, double value, double min) {
+    auto line = [](const QString& name, double value, double min, bool wasMeasured) {
+        if (!wasMeasured) return tr("%1 not measured").arg(name);
         const QString text = QStringLiteral("%1 %2 % (min %3 %)").arg(name, pct(value), QString::number(min));
         return value < min ? QStringLiteral("<b>%1</b>").arg(text) : text;  // the failed test stands out
     };
     return QStringLiteral("<p><b>%1</b> &mdash; %2, radius %3 px, %4</p><p>%5<br/>%6<br/>%7</p>")
         .arg(candidateLabel(k).toHtmlEscaped(), where, QString::number(k.radiusPx, 'f', 1), verdict,
-             line(tr("non-green"), k.scores.nonGreenPct, t.minNonGreenPct),
-             line(tr("non-black"), k.scores.nonBlackPct, t.minNonBlackPct),
-             line(tr("circularity"), k.scores.circularityPct, requiredCircularityPct(k, t)));
+             line(tr("non-green"), k.scores.nonGreenPct, t.minNonGreenPct, k.scores.squareMeasured),
+             line(tr("non-black"), k.scores.nonBlackPct, t.minNonBlackPct, k.scores.squareMeasured),
+             line(tr("circularity"), k.scores.circularityPct, requiredCircularityPct(k, t), k.scores.shapeMeasured));
 }
 
 QString candidateLabelLegend()

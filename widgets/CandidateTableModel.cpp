@@ -22,6 +22,20 @@ QString number(double v, int decimals) { return QString::number(v, 'f', decimals
 
 bool isRejected(RejectReason r) { return r != RejectReason::None && r != RejectReason::NotChosen; }
 
+// A score validation never computed shows "-" and sorts as empty, not as a failing 0: the
+// prefilter's refusals have no shape, and a pipeline that does not explain its rejections stops
+// at a failed colour test (Pipeline::setExplainRejections).
+bool wasMeasured(const BallCandidate& c, int column)
+{
+    switch (column) {
+    case CandidateTableModel::NonGreenColumn:
+    case CandidateTableModel::NonBlackColumn: return c.scores.squareMeasured;
+    case CandidateTableModel::CircularityColumn:
+    case CandidateTableModel::RunOnColumn: return c.scores.shapeMeasured;
+    default: return true;
+    }
+}
+
 }  // namespace
 
 CandidateTableModel::CandidateTableModel(QObject* parent) : QAbstractTableModel(parent)
@@ -115,13 +129,12 @@ QVariant CandidateTableModel::data(const QModelIndex& index, int role) const
     if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid)) return {};
     const BallCandidate& c = candidates_[std::size_t(index.row())];
     const RowKind kind = kindOf(index.row());
-    const bool prefiltered = kind == RowKind::Prefiltered;
     const int column = index.column();
     const bool accepted = c.rejected == RejectReason::None;
     const bool failed = isRejected(c.rejected) && column == failingColumn(c.rejected);
     switch (role) {
-    case Qt::DisplayRole: return display(c, column, prefiltered);
-    case SortRole: return sortValue(c, column, prefiltered);
+    case Qt::DisplayRole: return display(c, column);
+    case SortRole: return sortValue(c, column);
     case Qt::ToolTipRole: return cellToolTip(c, column, kind);
     case Qt::TextAlignmentRole:
         return column == SourceColumn || column == ResultColumn ? int(Qt::AlignLeft | Qt::AlignVCenter)
@@ -145,10 +158,10 @@ QVariant CandidateTableModel::data(const QModelIndex& index, int role) const
     }
 }
 
-QVariant CandidateTableModel::display(const BallCandidate& c, int column, bool prefiltered) const
+QVariant CandidateTableModel::display(const BallCandidate& c, int column) const
 {
     const bool specific = c.source == CandidateSource::SpecificHough;
-    if (prefiltered && (column == CircularityColumn || column == RunOnColumn)) return QStringLiteral("-");
+    if (!wasMeasured(c, column)) return QStringLiteral("-");
     switch (column) {
     case AreaColumn: return c.area >= 0 ? QString::number(c.area + 1) : QStringLiteral("-");
     case SourceColumn: return QString::fromUtf8(candidateSourceName(c.source).data(), int(candidateSourceName(c.source).size()));
@@ -166,13 +179,13 @@ QVariant CandidateTableModel::display(const BallCandidate& c, int column, bool p
     return {};
 }
 
-QVariant CandidateTableModel::sortValue(const BallCandidate& c, int column, bool prefiltered) const
+QVariant CandidateTableModel::sortValue(const BallCandidate& c, int column) const
 {
-    if (prefiltered && (column == CircularityColumn || column == RunOnColumn)) return {};  // not measured
+    if (!wasMeasured(c, column)) return {};
     switch (column) {
     case AreaColumn: return c.area;
     case SourceColumn:
-    case ResultColumn: return display(c, column, prefiltered);
+    case ResultColumn: return display(c, column);
     case XColumn: return c.x;
     case YColumn: return c.y;
     case RadiusColumn: return c.radiusPx;

@@ -71,8 +71,8 @@ private:
     };
 
     void setThresholds(const Config& config);
-    QVariant display(const BallCandidate& c, int column, bool prefiltered) const;
-    QVariant sortValue(const BallCandidate& c, int column, bool prefiltered) const;
+    QVariant display(const BallCandidate& c, int column) const;
+    QVariant sortValue(const BallCandidate& c, int column) const;
     QString columnToolTip(int column) const;
     // Where a row came from: the searches, or the prefilter's refusals at the end of the specific
     // search's rows (listed, or recentred and validated).
