@@ -430,8 +430,9 @@ std::vector<ConfigKey> buildSchema()
                           [](auto& c) -> auto& { return c.validation.minCircularityPct; }));
     s.push_back(doubleKey("validation.min_circularity_clear_pct", "%", 0, 100, false,
                           "Circularity a candidate in the clear needs (its square at least clear_min_non_black_pct non-black: "
-                          "no robot hides it, every ray is its own border; and at least clear_min_radius_px); lower finds blurred "
-                          "and noisy balls that lose a ray or two, and lets more feet and line ends through; at or above "
+                          "no robot hides it, every ray is its own border; at least clear_min_radius_px; its fitted radius within "
+                          "clear_max_fit_error of the expected); lower finds blurred "
+                          "and noisy balls that lose a few rays, and lets more feet and line ends through; at or above "
                           "min_circularity_pct: one threshold for all (thesis)",
                           [](auto& c) -> auto& { return c.validation.minCircularityClearPct; }));
     s.push_back(doubleKey("validation.clear_min_non_black_pct", "%", 0, 100, false,
@@ -442,6 +443,11 @@ std::vector<ConfigKey> buildSchema()
                           "Expected radius from which min_circularity_clear_pct applies; lower lets far line junctions and "
                           "line ends, as round as a small ball, through; 0: at every radius",
                           [](auto& c) -> auto& { return c.validation.clearMinRadiusPx; }));
+    s.push_back(doubleKey("validation.clear_max_fit_error", "fraction", 0, 1, false,
+                          "min_circularity_clear_pct applies only when the circle fit's radius is within this fraction of the "
+                          "expected radius (circle_fit): a ball's blurred border still fits its size, clutter that reaches the lower "
+                          "threshold mostly does not; 1: no such condition",
+                          [](auto& c) -> auto& { return c.validation.clearMaxFitError; }));
     s.push_back(doubleKey("validation.radius_tolerance", "fraction", 0, 1, true, "Edges count within expected radius +- this fraction",
                           [](auto& c) -> auto& { return c.validation.radiusTolerance; }));
     s.push_back(doubleKey("validation.min_radius_band_px", "px", 0, 10, false, "The +- band is never thinner than this (radius_tolerance of a small ball is under a pixel; borders blur ~1 px inwards)",

@@ -524,8 +524,10 @@ double fitAllowance(double expectedRadiusPx, const ValidationOptions& options)
 
 double requiredCircularityPct(const BallCandidate& c, const ValidationOptions& options)
 {
-    const bool clear =
-        c.scores.nonBlackPct >= options.clearMinNonBlackPct && c.expectedRadiusPx >= options.clearMinRadiusPx;
+    const bool fitsModel = !options.circleFit || std::abs(c.scores.fitRadiusPx - c.expectedRadiusPx) <=
+                                                     options.clearMaxFitError * c.expectedRadiusPx;
+    const bool clear = c.scores.nonBlackPct >= options.clearMinNonBlackPct &&
+                       c.expectedRadiusPx >= options.clearMinRadiusPx && fitsModel;
     return clear ? std::min(options.minCircularityPct, options.minCircularityClearPct) : options.minCircularityPct;
 }
 

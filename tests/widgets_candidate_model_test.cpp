@@ -63,6 +63,7 @@ PipelineResult twoCandidates()
     line.expectedRadiusPx = 10.92;
     line.distancePx = 212.3;
     line.scores = measured(91.2, 77.7, 41.66, 2.1);
+    line.scores.fitRadiusPx = 11.3;  // the expected size: in the clear
     r.candidates = {ball, line};
     r.detection.found = true;
     r.detection.candidate = 0;
@@ -223,11 +224,18 @@ void CandidateModelTest::headerAndTooltips()
     }
     const QString circ = model.headerData(Col::CircularityColumn, Qt::Horizontal, Qt::ToolTipRole).toString();
     QVERIFY2(circ.contains(QStringLiteral("validation.min_circularity_pct")) && circ.contains(QStringLiteral("70.0 %")), qPrintable(circ));
-    QVERIFY2(circ.contains(QStringLiteral("validation.min_circularity_clear_pct")) && circ.contains(QStringLiteral("65.0 %")),
+    QVERIFY2(circ.contains(QStringLiteral("validation.min_circularity_clear_pct")) && circ.contains(QStringLiteral("60.0 %")) &&
+                 circ.contains(QStringLiteral("within 15 %")),
              qPrintable(circ));
-    // The circle is in the clear (77.7 % non-black): it is held to the clear threshold.
+    // The circle is in the clear (77.7 % non-black, fitted at its size): it is held to the clear threshold.
     const QString failed = model.index(1, Col::CircularityColumn).data(Qt::ToolTipRole).toString();
-    QVERIFY2(failed.contains(QStringLiteral("41.7 % is below 65.0 %")), qPrintable(failed));
+    QVERIFY2(failed.contains(QStringLiteral("41.7 % is below 60.0 %")), qPrintable(failed));
+    // Fitted 20 % smaller than expected (validation.clear_max_fit_error): the thesis' 70 %.
+    PipelineResult small = twoCandidates();
+    small.candidates[1].scores.fitRadiusPx = 8.7;
+    model.setResult(small, Config{});
+    const QString offSize = model.index(1, Col::CircularityColumn).data(Qt::ToolTipRole).toString();
+    QVERIFY2(offSize.contains(QStringLiteral("41.7 % is below 70.0 %")), qPrintable(offSize));
     // Beside a robot (below validation.clear_min_non_black_pct) it is held to the thesis' 70 %.
     PipelineResult beside = twoCandidates();
     beside.candidates[1].scores.nonBlackPct = 50.0;

@@ -254,11 +254,13 @@ QString CandidateTableModel::columnToolTip(int column) const
     case CircularityColumn:
         return tr("Share of the rays from the centre that meet an edge at the expected radius +- %1 % "
                   "(validation.radius_tolerance); a ball needs at least %2 % (validation.min_circularity_pct), or "
-                  "%3 % in the clear: its square at least %4 % non-black and its expected radius at least %5 px "
-                  "(validation.min_circularity_clear_pct). Lines, corners and feet fail it.")
+                  "%3 % in the clear: its square at least %4 % non-black, its expected radius at least %5 px and "
+                  "its fitted radius within %6 % of it (validation.min_circularity_clear_pct). Lines, corners and "
+                  "feet fail it.")
             .arg(number(t.validation.radiusTolerance * 100.0, 0), number(t.validation.minCircularityPct, 1),
                  number(std::min(t.validation.minCircularityPct, t.validation.minCircularityClearPct), 1),
-                 number(t.validation.clearMinNonBlackPct, 1), number(t.validation.clearMinRadiusPx, 1));
+                 number(t.validation.clearMinNonBlackPct, 1), number(t.validation.clearMinRadiusPx, 1),
+                 number(t.validation.clearMaxFitError * 100.0, 0));
     case RunOnColumn:
         return tr("Share of the rays along which the centre's colour runs on without a break beyond the circle; at most "
                   "%1 % (validation.max_run_on_pct). A ball has carpet just outside its border; line corners fail it.")
