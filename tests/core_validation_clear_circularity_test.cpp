@@ -55,8 +55,8 @@ private slots:
         QTest::addColumn<double>("clearPct");
         QTest::addColumn<double>("required");
         QTest::newRow("in the clear") << 100.0 << 10.0 << 10.0 << 60.0 << 60.0;
-        QTest::newRow("at clear_min_non_black_pct") << 70.0 << 10.0 << 10.0 << 60.0 << 60.0;
-        QTest::newRow("beside a robot") << 69.0 << 10.0 << 10.0 << 60.0 << 70.0;
+        QTest::newRow("at clear_min_non_black_pct") << 60.0 << 10.0 << 10.0 << 60.0 << 60.0;
+        QTest::newRow("beside a robot") << 59.0 << 10.0 << 10.0 << 60.0 << 70.0;
         QTest::newRow("at clear_min_radius_px") << 100.0 << 9.0 << 9.0 << 60.0 << 60.0;
         QTest::newRow("far: a line junction's size") << 100.0 << 8.9 << 8.9 << 60.0 << 70.0;
         QTest::newRow("fit 1.5 px large: at clear_max_fit_error") << 100.0 << 10.0 << 11.5 << 60.0 << 60.0;
@@ -75,7 +75,7 @@ private slots:
         QFETCH(double, required);
         ValidationOptions o;
         QCOMPARE(o.minCircularityPct, 70.0);
-        QCOMPARE(o.clearMinNonBlackPct, 70.0);
+        QCOMPARE(o.clearMinNonBlackPct, 60.0);
         QCOMPARE(o.clearMinRadiusPx, 9.0);
         QCOMPARE(o.clearMaxFitError, 0.15);
         o.minCircularityClearPct = clearPct;
