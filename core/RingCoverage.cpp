@@ -24,16 +24,19 @@ double ringShareInImage(const GeometryOptions& g)
     const double r0 = std::max(0.0, g.innerRadius);
     const double r1 = g.outerRadius;
     const double ringArea = M_PI * (r1 * r1 - r0 * r0);
-    if (!(ringArea > 0.0)) return 0.0;
-    // Midpoint rule over the outer circle's rows: 4 samples per pixel row is far finer than
-    // the question ("mostly off the image?") needs.
-    const int steps = std::max(64, int(std::ceil(8.0 * r1)));
-    const double h = 2.0 * r1 / steps;
+    if (!std::isfinite(ringArea) || !(ringArea > 0.0)) return 0.0;
+    if (!std::isfinite(g.centerX) || !std::isfinite(g.centerY)) return 0.0;
+    // Midpoint rule over the rows the ring and the image share: 8 samples per pixel row is far
+    // finer than the question ("mostly off the image?") needs. Integrating only those rows keeps
+    // the step count bounded by the image, whatever radius a hand-edited config holds.
+    const double top = std::max(0.0, g.centerY - r1);
+    const double bottom = std::min(double(g.imageHeight), g.centerY + r1);
+    if (!(bottom > top)) return 0.0;
+    const int steps = int(std::clamp(std::ceil(8.0 * (bottom - top)), 64.0, 1.0e6));
+    const double h = (bottom - top) / steps;
     double inside = 0.0;
     for (int i = 0; i < steps; ++i) {
-        const double y = g.centerY - r1 + (i + 0.5) * h;
-        if (y < 0.0 || y > g.imageHeight) continue;
-        const double dy = y - g.centerY;
+        const double dy = top + (i + 0.5) * h - g.centerY;
         inside += (clippedChord(r1, dy, g.centerX, g.imageWidth) - clippedChord(r0, dy, g.centerX, g.imageWidth)) * h;
     }
     return std::clamp(inside / ringArea, 0.0, 1.0);
