@@ -471,6 +471,12 @@ std::vector<ConfigKey> buildSchema()
                           "How far out, in expected radii, the centre's colour must run on for a ray to count in the run-on test; "
                           "lower: balls beside a line run on too, higher: far line corners pass",
                           [](auto& c) -> auto& { return c.validation.runOnReach; }));
+    s.push_back(doubleKey("validation.run_on_chroma_step", "chroma (0-255)", 0, 255, false,
+                          "In the run-on test an unclassified pixel ends the run of an unclassified centre when it is "
+                          "greyer by more than this (chroma, max - min of B, G, R) and no darker (mean of B, G, R): line paint. A coloured ball "
+                          "in dim light touching a grey line (both unclassified) no longer runs on along the line; lower: "
+                          "faint colour differences end runs too. 0: off, the class alone",
+                          [](auto& c) -> auto& { return c.validation.runOnChromaStep; }));
     s.push_back(doubleKey("validation.min_usable_ray_share", "fraction", 0, 1, false,
                           "Circularity is judged only when this share of the circle's rays crosses processed pixels (the rest lie on "
                           "the robot body or rods); below it the candidate fails; lower: judges a mostly hidden circle by a few rays",

@@ -385,9 +385,35 @@ void scoreCircularity(const Circle& c, ValidationScores& s)
     s.circularityPct = 100.0 * double(in.size()) / usable;
 }
 
+// The colour's chroma, max - min of its channels (0..255): unlike saturation it stays steady in
+// dim light, where a few grey levels of noise swing (max - min) / max widely.
+int chroma(const std::array<std::uint8_t, 3>& bgr)
+{
+    return int(std::max({bgr[0], bgr[1], bgr[2]})) - int(std::min({bgr[0], bgr[1], bgr[2]}));
+}
+
+// The mean of the three channels: a white line in dim light is brighter than an orange ball by
+// this, though not by its brightest channel.
+int channelMean(const std::array<std::uint8_t, 3>& bgr)
+{
+    return (int(bgr[0]) + int(bgr[1]) + int(bgr[2])) / 3;
+}
+
+// Whether an unclassified pixel is line paint beside an unclassified coloured centre: greyer by
+// more than run_on_chroma_step and no darker. Only that breaks a run: a leg's or a robot's own
+// shading (darker, or as coloured) must not, or their dim parts would pass as balls.
+bool lineBesideColour(const std::array<std::uint8_t, 3>& pixel, const std::array<std::uint8_t, 3>& centre,
+                      double step)
+{
+    return chroma(pixel) < chroma(centre) - step && channelMean(pixel) >= channelMean(centre);
+}
+
 // Whether the centre's colour class goes on without a break along one ray out to `reach` px;
-// nothing when the ray meets black (a robot) or an unprocessed pixel: it is not judged.
-std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double reach)
+// nothing when the ray meets black (a robot) or an unprocessed pixel: it is not judged. With
+// `centre` (run_on_chroma_step), the run also stops at unclassified line paint: the class says
+// nothing of an unclassified pixel's colour.
+std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double reach,
+                                const std::optional<std::array<std::uint8_t, 3>>& centre)
 {
     int first = -1;
     for (double r = 0.0; r <= reach + 1e-9; r += 0.5) {
@@ -400,8 +426,32 @@ std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double re
             first = int(cls);
         else if (int(cls) != first)
             return false;
+        if (centre && cls == std::uint8_t(ColorClass::Unknown) &&
+            lineBesideColour(c.colour->bgrAt(p.x, p.y), *centre, c.options.runOnChromaStep))
+            return false;
     }
     return true;
+}
+
+// The mean colour of the 3x3 pixels at the centre, when the centre is unclassified and
+// run_on_chroma_step is on.
+std::optional<std::array<std::uint8_t, 3>> unclassifiedCentreColour(const Circle& c)
+{
+    const cv::Point centre(c.x, c.y);
+    if (!c.colour || c.options.runOnChromaStep <= 0.0 || !c.known(centre) ||
+        c.classAt(centre) != std::uint8_t(ColorClass::Unknown))
+        return std::nullopt;
+    int sum[3] = {0, 0, 0};
+    int n = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const cv::Point p(c.x + dx, c.y + dy);
+            if (!c.known(p)) continue;
+            const auto bgr = c.colour->bgrAt(p.x, p.y);
+            for (int k = 0; k < 3; ++k) sum[k] += bgr[std::size_t(k)];
+            ++n;
+        }
+    return std::array<std::uint8_t, 3>{std::uint8_t(sum[0] / n), std::uint8_t(sum[1] / n), std::uint8_t(sum[2] / n)};
 }
 
 // Our run-on test: the share of judged rays along which the centre's colour runs on beyond the
@@ -413,13 +463,14 @@ void scoreRunOn(const Circle& c, ValidationScores& s)
     const int rays = rayCount(c.radius);
     // A ball the fit found larger than expected is not its own colour running on.
     const double reach = options.runOnReach * std::max(c.radius, s.fitRadiusPx);
+    const std::optional<std::array<std::uint8_t, 3>> centre = unclassifiedCentreColour(c);
     int judged = 0;
     int runOn = 0;
     for (int i = 0; i < rays; ++i) {
         const double a = 2.0 * M_PI * i / rays;
         const double ca = std::cos(a);
         const double sa = std::sin(a);
-        const std::optional<bool> runs = runsOnAlong(c, ca, sa, reach * c.reachAlong(ca, sa));
+        const std::optional<bool> runs = runsOnAlong(c, ca, sa, reach * c.reachAlong(ca, sa), centre);
         if (!runs) continue;
         ++judged;
         runOn += *runs;

@@ -77,6 +77,14 @@ struct ValidationOptions {
     // beside a line keep a strip of carpet). 1.5 and 1.75 left far line corners at 11 %, barely
     // above a white ball touching a line (10 %); 1.3 puts them at 18.5 % and more.
     double runOnReach = 1.3;
+    // 0..255; in the run-on test an unclassified pixel ends the run of an unclassified centre
+    // when it is greyer by more than this (chroma, max - min of B, G, R) and no darker (mean of
+    // B, G, R): line paint (needs the frame's colours; 0: off, the class alone). In dim light a
+    // coloured ball and a grey line both leave every class, and a ball touching such a line
+    // "ran on" along it. Optics matrix seeds 1-4: combined 2576 -> 2595 balls, false-positive
+    // frames unchanged (17). "No darker": a symmetric chroma test found 2620 but also ended runs
+    // along a leg's darker shading and passed two legs at the rim as balls (19).
+    double runOnChromaStep = 20.0;
     // Fraction of the circle's rays; rays whose whole search band lies on unprocessed pixels
     // (robot body, rods) say nothing about the shape and are left out. With fewer usable rays
     // than this share the circularity is not judged (0 %, so the candidate fails).
