@@ -22,7 +22,6 @@ constexpr double kAngle = 30;      // degrees
 const cv::Scalar kDimGrey(95, 95, 95);     // a line in a dim hall: no class
 const cv::Scalar kDimOrange(25, 50, 75);   // an orange ball in the same light (V 75): no class either
 
-
 // Unit vectors of the ball's radial direction and of the line's, across it.
 cv::Point2d radial()
 {
