@@ -648,6 +648,16 @@ std::vector<ConfigKey> buildSchema()
     s.push_back(doubleKey("validation.rim_max_width", "fraction", 0, 10, false,
                           "rim_test: and at most this share of it: a line along the rim, or a ball merged with clutter, runs on",
                           [](auto& c) -> auto& { return c.validation.rimMaxWidth; }));
+    s.push_back(doubleKey("validation.rim_arc_carpet_px", "px", 0, 10, false,
+                          "rim_test: the run along the arc ends at carpet only where the arc stays carpet this much further: "
+                          "a speck of carpet noise in a dim hall floor at the rim does not end it (the floor then runs on "
+                          "past rim_max_width); 0: at the first carpet pixel",
+                          [](auto& c) -> auto& { return c.validation.rimArcCarpetPx; }));
+    s.push_back(boolKey("validation.rim_skip_inner_field", false,
+                        "rim_test: an inward ray's carpet pixels more than rim_band_px inside the ball's border (a green panel, "
+                        "noise in its shadow) are skipped, and the first one from there on must lie within the band; off: the "
+                        "ray's first carpet pixel decides",
+                        [](auto& c) -> auto& { return c.validation.rimSkipInnerField; }));
     s.push_back(doubleKey("validation.rim_min_radius_px", "px", 0, 100, false,
                           "rim_test: a circle that passes it is validated from this expected radius on, instead of "
                           "min_radius_px (its closed inward side is what a small line corner lacks)",

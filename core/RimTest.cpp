@@ -5,11 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace omnitune {
 
 RimClosure rimClosure(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
-                      double radius, double squash, double bandPx, double minInwardCos)
+                      double radius, double squash, double bandPx, double minInwardCos, bool skipInnerField)
 {
     RimClosure out;
     const double ix = geometry.options().centerX - x;
@@ -40,6 +41,7 @@ RimClosure rimClosure(const cv::Mat& classes, const Geometry& geometry, const Co
             }
             const std::uint8_t cls = classes.ptr<std::uint8_t>(py)[px];
             if (roles.field(cls)) {
+                if (skipInnerField && r < rMin - 1e-9) continue;
                 closed = r >= rMin - 1e-9;
                 break;
             }
@@ -51,22 +53,38 @@ RimClosure rimClosure(const cv::Mat& classes, const Geometry& geometry, const Co
 }
 
 double rimArcRunPx(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
-                   double maxEachWayPx)
+                   double maxEachWayPx, double carpetPx)
 {
     const double cx = geometry.options().centerX;
     const double cy = geometry.options().centerY;
     const double d = std::hypot(x - cx, y - cy);
     if (!(d > 1.0)) return 0.0;
     const double a0 = std::atan2(y - cy, x - cx);
+    // What the arc holds `s` px along it `way`: nothing (unprocessed or off the image), or the class.
+    auto classAlong = [&](double way, double s) -> std::optional<std::uint8_t> {
+        const double a = a0 + way * s / d;
+        const int px = int(std::lround(cx + d * std::cos(a)));
+        const int py = int(std::lround(cy + d * std::sin(a)));
+        if (px < 0 || py < 0 || px >= classes.cols || py >= classes.rows || !geometry.isUsed(px, py))
+            return std::nullopt;
+        return classes.ptr<std::uint8_t>(py)[px];
+    };
+    // Carpet that goes on: field here and at every px on out to carpetPx (unprocessed ends it too).
+    auto carpetGoesOn = [&](double way, double s) {
+        for (double t = 1.0; t <= carpetPx + 1e-9; t += 1.0) {
+            const std::optional<std::uint8_t> cls = classAlong(way, s + t);
+            if (cls && !roles.field(*cls)) return false;
+            if (!cls) break;
+        }
+        return true;
+    };
     double run = 0.0;
     for (const double way : {1.0, -1.0}) {
         double s = 0.5;
         for (; s <= maxEachWayPx + 1e-9; s += 0.5) {
-            const double a = a0 + way * s / d;
-            const int px = int(std::lround(cx + d * std::cos(a)));
-            const int py = int(std::lround(cy + d * std::sin(a)));
-            if (px < 0 || py < 0 || px >= classes.cols || py >= classes.rows || !geometry.isUsed(px, py)) break;
-            if (roles.field(classes.ptr<std::uint8_t>(py)[px])) break;
+            const std::optional<std::uint8_t> cls = classAlong(way, s);
+            if (!cls) break;
+            if (roles.field(*cls) && carpetGoesOn(way, s)) break;
         }
         run += std::min(s, maxEachWayPx);
     }

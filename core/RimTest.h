@@ -16,7 +16,9 @@ class Geometry;
 
 // The inward rays of one candidate: those within the half-angle whose cosine is minInwardCos of
 // the direction towards the mirror centre. A ray is judged when it stays on processed pixels;
-// it is closed when the first field pixel it meets lies within bandPx of the ball's border:
+// it is closed when the first field pixel it meets lies within bandPx of the ball's border
+// (skipInnerField: the first one from bandPx inside the border on; the field pixels before it
+// are a green panel or carpet noise inside the ball):
 // the ellipse of the circle's area squashed radially by `squash` (radial over tangential
 // semi-axis, BallModel::squashAt; 1: the circle). Far balls at the rim of a spherical mirror are
 // squashed to ~0.6, which a robot's upright marker is not.
@@ -28,14 +30,16 @@ struct RimClosure {
 };
 
 RimClosure rimClosure(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
-                      double radius, double squash, double bandPx, double minInwardCos);
+                      double radius, double squash, double bandPx, double minInwardCos, bool skipInnerField = false);
 
 // How far (px, both ways added) the candidate's non-field pixels run on along the arc of its own
 // distance from the mirror centre, through its centre: about the ball's width for a ball, but a
 // line along the rim, or a robot's row of markers and its dark body, runs on. Each way stops at
-// the first field or unprocessed pixel, or after maxEachWayPx.
+// the first unprocessed pixel, at the first field pixel after which the arc stays field for
+// carpetPx more (0: at the first field pixel; 1 lets a speck of carpet noise in a dim floor not
+// end the run), or after maxEachWayPx.
 double rimArcRunPx(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
-                   double maxEachWayPx);
+                   double maxEachWayPx, double carpetPx = 0.0);
 
 // The ball's width (px) along its arc: the tangential axis of the ellipse of the circle's area
 // squashed radially by `squash` (1: the circle's diameter).

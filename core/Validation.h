@@ -247,6 +247,15 @@ struct ValidationOptions {
     // rim 0.57-0.83 (narrower than a ball there), a line along the rim 4.5.
     double rimMinWidth = 0.78;
     double rimMaxWidth = 1.4;
+    // px; the arc run ends at carpet only where the arc stays field this much further: a speck
+    // of carpet noise in the dim hall floor at the rim ended it and let the floor pass as a ball
+    // of the right width. 0: at the first field pixel.
+    double rimArcCarpetPx = 1.0;
+    // The inward closure skips field pixels more than rimBandPx inside the border (a green panel
+    // of the ball, its shadow's noise): the first field pixel from there on decides. Off: the
+    // first field pixel on the ray. Optics matrix seeds 1-4 with both: combined 2595 -> 2627
+    // balls, false-positive frames 17 -> 15; skipping alone passed two floor patches (19).
+    bool rimSkipInnerField = true;
     // px; a candidate that passes the rim test is validated from this expected radius on (instead
     // of minRadiusPx): the closed inward side is what a line corner of that size lacks.
     double rimMinRadiusPx = 3.5;

@@ -51,6 +51,19 @@ cv::Point drawFarBall(cv::Mat& frame, const Config& c, double distance)
 
 BallCandidate validate(const Config& c, const cv::Mat& frame, cv::Point p) { return validateAt(c, frame, p); }
 
+// A 200 x 200 image with the mirror centre in the middle: the arc 85 px below it runs along x.
+GeometryOptions testGeometry()
+{
+    GeometryOptions g;
+    g.imageWidth = 200;
+    g.imageHeight = 200;
+    g.centerX = 100;
+    g.centerY = 100;
+    g.innerRadius = 10;
+    g.outerRadius = 90;
+    return g;
+}
+
 }  // namespace
 
 class RimTestTest : public QObject {
@@ -123,14 +136,7 @@ private slots:
     // The measures themselves, on a hand-made class image.
     void arcRunAndClosure()
     {
-        GeometryOptions g;
-        g.imageWidth = 200;
-        g.imageHeight = 200;
-        g.centerX = 100;
-        g.centerY = 100;
-        g.innerRadius = 10;
-        g.outerRadius = 90;
-        const Geometry geometry(g, cv::Mat());
+        const Geometry geometry(testGeometry(), cv::Mat());
         const ColourRoles roles = defaultColourRoles();
         cv::Mat classes(200, 200, CV_8UC1, cv::Scalar(int(ColorClass::Green)));
         // An orange blob 9 px wide along x at (100, 185): the arc there runs along x.
@@ -143,6 +149,40 @@ private slots:
         QCOMPARE(fits.closedPct(), 100.0);
         // A radius of 6 expects the border 6 px up: the carpet comes too early.
         QCOMPARE(rimClosure(classes, geometry, roles, 100, 185, 6.0, 1.0, 1.0, 0.9).closedPct(), 0.0);
+    }
+
+    // validation.rim_arc_carpet_px: a speck of carpet in a floor strip along the arc does not end
+    // the run; carpet that goes on does.
+    void arcRunEndsAtCarpetThatGoesOn()
+    {
+        const Geometry geometry(testGeometry(), cv::Mat());
+        const ColourRoles roles = defaultColourRoles();
+        cv::Mat classes(200, 200, CV_8UC1, cv::Scalar(int(ColorClass::Green)));
+        cv::rectangle(classes, cv::Rect(60, 183, 81, 5), cv::Scalar(int(ColorClass::Unknown)), cv::FILLED);
+        classes.at<std::uint8_t>(185, 106) = std::uint8_t(ColorClass::Green);
+        const double atSpeck = rimArcRunPx(classes, geometry, roles, 100, 185, 40.0, 0.0);
+        const double pastSpeck = rimArcRunPx(classes, geometry, roles, 100, 185, 40.0, 1.0);
+        QVERIFY2(pastSpeck > atSpeck + 8.0, qPrintable(QString("%1 %2").arg(atSpeck).arg(pastSpeck)));
+        classes.at<std::uint8_t>(185, 107) = std::uint8_t(ColorClass::Green);
+        QCOMPARE(rimArcRunPx(classes, geometry, roles, 100, 185, 40.0, 1.0), atSpeck);
+    }
+
+    // validation.rim_skip_inner_field: a green panel inside the ball no longer stands for the
+    // carpet on its inward side.
+    void closureSkipsAGreenPanelInside()
+    {
+        const Geometry geometry(testGeometry(), cv::Mat());
+        const ColourRoles roles = defaultColourRoles();
+        cv::Mat classes(200, 200, CV_8UC1, cv::Scalar(int(ColorClass::Green)));
+        // A ball 4 px in radius at (100, 185) whose border towards the centre is at y = 181,
+        // with a green panel 2 px inwards of its centre.
+        cv::rectangle(classes, cv::Rect(92, 181, 17, 9), cv::Scalar(int(ColorClass::Orange)), cv::FILLED);
+        cv::line(classes, {97, 183}, {103, 183}, cv::Scalar(int(ColorClass::Green)));
+        const RimClosure first = rimClosure(classes, geometry, roles, 100, 185, 4.0, 1.0, 1.0, 0.9, false);
+        const RimClosure skipping = rimClosure(classes, geometry, roles, 100, 185, 4.0, 1.0, 1.0, 0.9, true);
+        QVERIFY(first.judged > 0);
+        QCOMPARE(first.closedPct(), 0.0);
+        QCOMPARE(skipping.closedPct(), 100.0);
     }
 };
 
