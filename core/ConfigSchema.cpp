@@ -630,11 +630,12 @@ std::vector<ConfigKey> buildSchema()
                           "what hough.prefilter_rim lets through); larger judges balls farther into the rim, and more clutter",
                           [](auto& c) -> auto& { return c.validation.rimMaxOverhangPx; }));
     s.push_back(doubleKey("validation.rim_min_closed_pct", "%", 0, 100, false,
-                          "rim_test: the share of the inward rays (towards the mirror centre) whose first carpet pixel lies "
-                          "within rim_band_px of the expected radius; lower passes more balls in shade, and more markers",
+                          "rim_test: the share of the inward rays (towards the mirror centre) whose first carpet pixel (with "
+                          "rim_skip_inner_field: the first from rim_band_px inside the border on) lies within rim_band_px of the "
+                          "expected radius; lower passes more balls in shade, and more markers",
                           [](auto& c) -> auto& { return c.validation.rimMinClosedPct; }));
     s.push_back(doubleKey("validation.rim_band_px", "px", 0, 20, false,
-                          "rim_test: how far from the expected radius an inward ray's first carpet pixel may lie",
+                          "rim_test: how far from the expected radius an inward ray's first carpet pixel (rim_min_closed_pct) may lie",
                           [](auto& c) -> auto& { return c.validation.rimBandPx; }));
     s.push_back(doubleKey("validation.rim_inward_cos", "cosine", -1, 1, false,
                           "rim_test: the rays judged are those within the half-angle of this cosine of the direction to the "

@@ -73,8 +73,8 @@ double rimArcRunPx(const cv::Mat& classes, const Geometry& geometry, const Colou
     auto carpetGoesOn = [&](double way, double s) {
         for (double t = 1.0; t <= carpetPx + 1e-9; t += 1.0) {
             const std::optional<std::uint8_t> cls = classAlong(way, s + t);
-            if (cls && !roles.field(*cls)) return false;
             if (!cls) break;
+            if (!roles.field(*cls)) return false;
         }
         return true;
     };
