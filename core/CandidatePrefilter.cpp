@@ -17,6 +17,7 @@ CandidatePrefilter candidatePrefilterFor(const Config& config)
         p.minNonBlackPct = config.hough.prefilterNonBlack * v.minNonBlackPct;
     }
     p.roles = ColourRoles(config.colors.classes);
+    p.validation = v;
     p.tooSmallBelowPx = v.minRadiusPx;
     // The rim test (validation.rim_test) judges circles up to rim_max_overhang_px farther out.
     if (config.hough.prefilterRim && v.refuseAtRim)

@@ -15,8 +15,11 @@
 // - Non-black: the share of those pixels not of a black class. Validation's is never smaller
 //   (validation.black_by_local_carpet counts fewer pixels as black), so a maximum below
 //   hough.prefilter_non_black x validation.min_non_black_pct (a robot the ball is behind) is one
-//   validation refuses too, at a fraction up to 1.
+//   validation refuses too, at a fraction up to 1. That holds for the class share only; with
+//   black_by_local_carpet a maximum the class share refuses is asked again as validation
+//   judges black (against the carpet around it), so a ball in a vignetted corner keeps its slot.
 #include "core/ColourClasses.h"
+#include "core/Validation.h"
 
 #include <opencv2/core.hpp>
 
@@ -30,6 +33,9 @@ struct CandidatePrefilter {
     double minNonGreenPct = 0.0;  // %; 0: no test
     double minNonBlackPct = 0.0;  // %; 0: no test (needs the classes image)
     ColourRoles roles;            // which class ids are black
+    // With validation.black_by_local_carpet a class-share non-black refusal is asked again with
+    // nonBlackPctAt (needs the frame's colours), under these options' carpet ring and ratio.
+    ValidationOptions validation;
     double maxReachPx = std::numeric_limits<double>::infinity();  // distance + expected radius, px
     // A listed colour refusal whose expected radius is below this (validation.min_radius_px) is
     // named "too small", validation's first test, so the table gives the reason validation would;

@@ -325,7 +325,9 @@ std::vector<ConfigKey> buildSchema()
                         [](auto& c) -> auto& { return c.hough.prefilterRim; }));
     s.push_back(doubleKey("hough.prefilter_non_black", "fraction", 0, 1, false,
                           "Hough maxima and blob seeds whose ball square is less non-black (by colour class) than this fraction "
-                          "of validation.min_non_black_pct take no candidate slot (a robot beside the ball); 0: off",
+                          "of validation.min_non_black_pct take no candidate slot (a robot beside the ball); with "
+                          "validation.black_by_local_carpet a refused one is asked again with black judged as validation judges it "
+                          "(against the carpet around it); 0: off",
                           [](auto& c) -> auto& { return c.hough.prefilterNonBlack; }));
     s.push_back(intKey("hough.prefilter_checks", "maxima", 1, 10000, false,
                        "Maxima per radial area the prefilter tests at most (each reads one ball square); bounds its time on a "
@@ -547,7 +549,8 @@ std::vector<ConfigKey> buildSchema()
     s.push_back(boolKey("validation.black_by_local_carpet", false,
                         "The non-black test counts a black-class pixel only when it is also darker than local_black_v_ratio x the "
                         "carpet's mean V around the candidate (carpet_ring_*): a ball's shaded side in a vignetted corner or the dim "
-                        "half of an unevenly lit hall is not black; off: the colour class alone (black relative to the whole frame)",
+                        "half of an unevenly lit hall is not black (hough.prefilter_non_black asks the same before refusing a maximum); "
+                        "off: the colour class alone (black relative to the whole frame)",
                         [](auto& c) -> auto& { return c.validation.blackByLocalCarpet; }));
     s.push_back(doubleKey("validation.local_black_v_ratio", "ratio", 0.05, 1, false,
                           "black_by_local_carpet: black is V <= this x the mean V of the carpet around the candidate; higher keeps "

@@ -144,7 +144,7 @@ struct Pipeline::Impl {
     // Thesis 4.1: candidates from the specific Hough transform, validated.
     void searchSpecific(PipelineResult& r, Stopwatch& clock)
     {
-        hough.process(edges, binary, r.candidates, r.classes);
+        hough.process(edges, binary, r.candidates, r.classes, colour);
         r.hough = hough.stats();
         r.timings.houghMs += clock.lap();
         // The prefilter's listed refusals come last and are already judged.

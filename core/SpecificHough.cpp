@@ -114,10 +114,11 @@ BallCandidate SpecificHough::candidateAt(int x, int y, std::int32_t sum, Candida
 }
 
 void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::vector<BallCandidate>& candidates,
-                            const cv::Mat& classes)
+                            const cv::Mat& classes, const FrameColour* colour)
 {
     CV_Assert(classes.empty() || (classes.type() == CV_8UC1 && classes.size() == binary.size()));
     classes_ = classes;
+    colour_ = colour;
     const cv::Size size = geometry_->imageSize();
     CV_Assert(edges.type() == CV_8UC1 && edges.size() == size);
     CV_Assert(binary.type() == CV_8UC1 && binary.size() == size);
@@ -167,6 +168,7 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
     for (const BallCandidate& d : dropped_) candidates.push_back(d);
     stats_.prefilterListed = int(dropped_.size());
     classes_ = cv::Mat();  // holds no reference to the caller's image between calls
+    colour_ = nullptr;
 }
 
 void SpecificHough::vote(const cv::Mat& edges, const cv::Mat& binary)
@@ -273,7 +275,8 @@ bool SpecificHough::passesPrefilter(const cv::Mat& binary, int x, int y, std::in
     const double d = geometry_->distanceAt(x, y);
     RejectReason why = RejectReason::None;
     SquareShares shares;
-    if (d + expectedRadiusAt(*geometry_, *ball_, x, y) > prefilter_.maxReachPx) {
+    const double radius = expectedRadiusAt(*geometry_, *ball_, x, y);
+    if (d + radius > prefilter_.maxReachPx) {
         why = RejectReason::OutsideArea;
     } else if (prefilter_.minNonGreenPct > 0.0 || prefilter_.minNonBlackPct > 0.0) {
         // The square validation's colour tests read (Validation.cpp: validateCandidate).
@@ -281,8 +284,13 @@ bool SpecificHough::passesPrefilter(const cv::Mat& binary, int x, int y, std::in
         shares = classSquareShares(binary, classes_, geometry_->usedMask(), prefilter_.roles, x, y, side);
         if (shares.nonGreenPct < prefilter_.minNonGreenPct)
             why = RejectReason::NonGreen;
-        else if (shares.nonBlackPct < prefilter_.minNonBlackPct)
-            why = RejectReason::NonBlack;
+        else if (shares.nonBlackPct < prefilter_.minNonBlackPct) {
+            // Validation's own share counts black against the carpet around (vignetting).
+            if (prefilter_.validation.blackByLocalCarpet && colour_ && !classes_.empty())
+                shares.nonBlackPct = nonBlackPctAt(x, y, radius, side, classes_, *geometry_, prefilter_.validation,
+                                                   colour_, prefilter_.roles);
+            if (shares.nonBlackPct < prefilter_.minNonBlackPct) why = RejectReason::NonBlack;
+        }
     }
     if (why == RejectReason::None) return true;
     ++stats_.prefiltered;

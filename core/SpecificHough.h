@@ -94,9 +94,10 @@ public:
     // `edges`: CV_8UC1 edge image; `binary`: CV_8UC1, 0 = non-green (where a centre may lie).
     // Fills the vote accumulator, its 3x3 sums and appends the candidates (no allocation once
     // `candidates` has capacity).
-    // `classes` (CV_8UC1 class ids, optional) lets the prefilter's non-black test run.
+    // `classes` (CV_8UC1 class ids, optional) lets the prefilter's non-black test run; `colour`
+    // (the frame's, optional) lets it judge black against the carpet around, as validation does.
     void process(const cv::Mat& edges, const cv::Mat& binary, std::vector<BallCandidate>& candidates,
-                 const cv::Mat& classes = cv::Mat());
+                 const cv::Mat& classes = cv::Mat(), const FrameColour* colour = nullptr);
 
     const HoughStats& stats() const { return stats_; }
 
@@ -150,6 +151,7 @@ private:
     CandidatePrefilter prefilter_;
     cv::Mat seedBinary_;  // binary without the black classes, for the seeds
     cv::Mat classes_;  // header of process()'s classes (no copy), for the prefilter
+    const FrameColour* colour_ = nullptr;  // process()'s colours, for the prefilter
     double voteScale_ = 1.0;  // edge pixels / voting pixels
     BlobSeeds blobs_;
 };

@@ -528,6 +528,26 @@ CarpetColour carpetRingAround(const FrameColour& colour, const cv::Mat& classes,
                                 options.carpetRingOuter * radius + 2.0 * options.carpetRingMarginPx);
 }
 
+double nonBlackPctAt(int x, int y, double radius, int squareSide, const cv::Mat& classes, const Geometry& geometry,
+                     const ValidationOptions& options, const FrameColour* colour, const ColourRoles& roles)
+{
+    const cv::Mat noEdges;
+    Circle circle{x, y, radius, classes, noEdges, geometry, options, colour, roles, ColorClass::Unknown, {}, nullptr};
+    if (colour && options.blackByLocalCarpet) circle.carpet = carpetRingAround(*colour, classes, geometry, roles, x, y, radius, options);
+    const int half = squareSide / 2;
+    int used = 0;
+    int black = 0;
+    for (int yy = std::max(0, y - half); yy <= std::min(classes.rows - 1, y + half); ++yy) {
+        const std::uint8_t* u = geometry.usedMask().ptr<std::uint8_t>(yy);
+        for (int xx = std::max(0, x - half); xx <= std::min(classes.cols - 1, x + half); ++xx) {
+            if (!u[xx]) continue;
+            ++used;
+            black += circle.blackAt({xx, yy});
+        }
+    }
+    return used > 0 ? 100.0 * (used - black) / used : 0.0;
+}
+
 ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,
                              const cv::Mat& edges, const Geometry& geometry, const ValidationOptions& options,
                              const FrameColour* colour, const ColourRoles& roles, double squash, bool stopAtColour)

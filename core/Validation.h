@@ -330,6 +330,13 @@ void validateCandidate(BallCandidate& candidate, const cv::Mat& classes, const c
 CarpetColour carpetRingAround(const FrameColour& colour, const cv::Mat& classes, const Geometry& geometry,
                               const ColourRoles& roles, int x, int y, double radius, const ValidationOptions& options);
 
+// Validation's non-black share (%) of the processed pixels in the square of odd side `side` at
+// (x, y), as scoreCircle counts it: with black_by_local_carpet (and `colour`), a black-class pixel
+// is black only when darker than local_black_v_ratio x the carpet around a circle of `radius`.
+// For the candidate prefilter, which must not refuse what validation would pass.
+double nonBlackPctAt(int x, int y, double radius, int squareSide, const cv::Mat& classes, const Geometry& geometry,
+                     const ValidationOptions& options, const FrameColour* colour, const ColourRoles& roles);
+
 // The scores alone, for a circle at (x, y) of the given radius and square side. `squash`: the
 // ball's radial over tangential semi-axis there (1: a circle; used when options.radialSquash).
 ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const cv::Mat& classes,

@@ -94,6 +94,44 @@ private slots:
         QVERIFY(candidateAt(c, frame, ball));
     }
 
+    // In a vignetted corner a dark ball falls below the frame's black (0.45 x the frame's carpet
+    // V) but not below the carpet around it: validation counts it non-black there
+    // (black_by_local_carpet), so the prefilter must not refuse it on the class share.
+    void aDarkBallInADimCornerKeepsItsSlot()
+    {
+        const Config c = twoSlots();
+        cv::Mat frame = greenField(c);
+        const cv::Point ball = drawBall(frame, c, 158, 30, cv::Scalar(84, 84, 84));
+        const int half = int(std::ceil(4.0 * expectedRadius(c, 158)));
+        cv::Mat corner = frame(cv::Rect(ball.x - half, ball.y - half, 2 * half + 1, 2 * half + 1));
+        corner.convertTo(corner, -1, 0.6);  // carpet V 84 (field), ball V 50 (black by the frame's 63)
+        const FrameColour colour(frame, PixelFormat::Bgr8);
+        {
+            const EdgeStages s(c, frame);
+            QVERIFY(ColourRoles(c.colors.classes).black(s.classes.at<std::uint8_t>(ball)));
+            QVERIFY(ColourRoles(c.colors.classes).field(s.classes.at<std::uint8_t>(ball.y, ball.x + 2 * half / 3)));
+        }
+        auto candidate = [&](const Config& k, const FrameColour* col) {
+            const EdgeStages s(k, frame);
+            SpecificHough hough(k.hough, s.geometry, s.ball, candidatePrefilterFor(k));
+            std::vector<BallCandidate> cands;
+            hough.process(s.edges, s.binary, cands, s.classes, col);
+            for (const auto& q : cands)
+                if (near(q.x, q.y, ball, 3.0) && q.rejected == RejectReason::None) return true;
+            return false;
+        };
+        QVERIFY(candidate(c, &colour));
+        QVERIFY(!candidate(c, nullptr));  // the class share alone refuses it
+        Config byClass = c;
+        byClass.validation.blackByLocalCarpet = false;
+        QVERIFY(!candidate(byClass, &colour));
+        // And validation agrees: the pipeline finds it.
+        PipelineResult r;
+        Pipeline(c).process(frame, PixelFormat::Bgr8, r);
+        QVERIFY(r.detection.found);
+        QVERIFY(near(r.detection.px, r.detection.py, ball));
+    }
+
     // A ball touching a robot's black body is one non-green region with it: too large for a
     // blob seed unless the black classes are left out of the flood.
     void aBallBesideARobotStillSeeds()
