@@ -533,7 +533,8 @@ double nonBlackPctAt(int x, int y, double radius, int squareSide, const cv::Mat&
 {
     const cv::Mat noEdges;
     Circle circle{x, y, radius, classes, noEdges, geometry, options, colour, roles, ColorClass::Unknown, {}, nullptr};
-    if (colour && options.blackByLocalCarpet) circle.carpet = carpetRingAround(*colour, classes, geometry, roles, x, y, radius, options);
+    if (colour && options.blackByLocalCarpet)
+        circle.carpet = carpetRingAround(*colour, classes, geometry, roles, x, y, radius, options);
     const int half = squareSide / 2;
     int used = 0;
     int black = 0;

@@ -330,8 +330,8 @@ void validateCandidate(BallCandidate& candidate, const cv::Mat& classes, const c
 CarpetColour carpetRingAround(const FrameColour& colour, const cv::Mat& classes, const Geometry& geometry,
                               const ColourRoles& roles, int x, int y, double radius, const ValidationOptions& options);
 
-// Validation's non-black share (%) of the processed pixels in the square of odd side `side` at
-// (x, y), as scoreCircle counts it: with black_by_local_carpet (and `colour`), a black-class pixel
+// Validation's non-black share (%) of the processed pixels in the square of odd side `squareSide`
+// at (x, y), as scoreCircle counts it: with black_by_local_carpet (and `colour`), a black-class pixel
 // is black only when darker than local_black_v_ratio x the carpet around a circle of `radius`.
 // For the candidate prefilter, which must not refuse what validation would pass.
 double nonBlackPctAt(int x, int y, double radius, int squareSide, const cv::Mat& classes, const Geometry& geometry,
