@@ -657,6 +657,11 @@ std::vector<ConfigKey> buildSchema()
                           "a speck of carpet noise in a dim hall floor at the rim does not end it (the floor then runs on "
                           "past rim_max_width); 0: at the first carpet pixel",
                           [](auto& c) -> auto& { return c.validation.rimArcCarpetPx; }));
+    s.push_back(doubleKey("validation.rim_arc_offset_px", "px", 0, 10, false,
+                          "rim_test: rim_min_width is met by the widest run along the arcs up to this far radially in and out "
+                          "of the candidate's centre (a far ball's centre found a px or two off crosses it off its widest "
+                          "chord); rim_max_width reads the arc through the centre; 0: that arc alone",
+                          [](auto& c) -> auto& { return c.validation.rimArcOffsetPx; }));
     s.push_back(boolKey("validation.rim_skip_inner_field", false,
                         "rim_test: an inward ray's carpet pixels more than rim_band_px inside the ball's border (a green panel, "
                         "noise in its shadow) are skipped, and the first one from there on must lie within the band; off: the "

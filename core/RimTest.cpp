@@ -52,7 +52,7 @@ RimClosure rimClosure(const cv::Mat& classes, const Geometry& geometry, const Co
     return out;
 }
 
-double rimArcRunPx(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
+double rimArcRunPx(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, double x, double y,
                    double maxEachWayPx, double carpetPx)
 {
     const double cx = geometry.options().centerX;
@@ -89,6 +89,22 @@ double rimArcRunPx(const cv::Mat& classes, const Geometry& geometry, const Colou
         run += std::min(s, maxEachWayPx);
     }
     return run;
+}
+
+double rimWidestArcRunPx(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
+                         double maxEachWayPx, double carpetPx, double offsetPx)
+{
+    double widest = rimArcRunPx(classes, geometry, roles, x, y, maxEachWayPx, carpetPx);
+    const double dx = x - geometry.options().centerX;
+    const double dy = y - geometry.options().centerY;
+    const double d = std::hypot(dx, dy);
+    if (!(d > 1.0)) return widest;
+    for (double o = 1.0; o <= offsetPx + 1e-9; o += 1.0)
+        for (const double way : {1.0, -1.0}) {
+            const double k = way * o / d;
+            widest = std::max(widest, rimArcRunPx(classes, geometry, roles, x + k * dx, y + k * dy, maxEachWayPx, carpetPx));
+        }
+    return widest;
 }
 
 }  // namespace omnitune

@@ -624,9 +624,11 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
         if (judged) {
             const double squash = options.radialSquash ? ball.squashAt(c.distancePx) : 1.0;
             const double width = rimExpectedWidthPx(c.expectedRadiusPx, squash);
-            const double run =
-                rimArcRunPx(classes, geometry, roles, c.x, c.y, options.rimMaxWidth * width, options.rimArcCarpetPx);
-            judged = run >= options.rimMinWidth * width && run <= options.rimMaxWidth * width &&
+            const double reach = options.rimMaxWidth * width;
+            const double run = rimArcRunPx(classes, geometry, roles, c.x, c.y, reach, options.rimArcCarpetPx);
+            const double widest =
+                rimWidestArcRunPx(classes, geometry, roles, c.x, c.y, reach, options.rimArcCarpetPx, options.rimArcOffsetPx);
+            judged = widest >= options.rimMinWidth * width && run <= options.rimMaxWidth * width &&
                      rimClosure(classes, geometry, roles, c.x, c.y, c.expectedRadiusPx, squash, options.rimBandPx,
                                 options.rimInwardCos, options.rimSkipInnerField)
                              .closedPct() >= options.rimMinClosedPct;

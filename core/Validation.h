@@ -251,6 +251,11 @@ struct ValidationOptions {
     // of carpet noise in the dim hall floor at the rim ended it and let the floor pass as a ball
     // of the right width. 0: at the first field pixel.
     double rimArcCarpetPx = 1.0;
+    // px; rim_min_width is met by the widest of the arc runs through the points up to this far
+    // radially in and out of the centre (rim_max_width still reads the arc through the centre):
+    // a far ball's centre found 1-2 px off its own crosses the squashed ball off its widest chord,
+    // and blur takes the rest. 0: the arc through the centre alone.
+    double rimArcOffsetPx = 1.0;
     // The inward closure skips field pixels more than rimBandPx inside the border (a green panel
     // of the ball, its shadow's noise): the first field pixel from there on decides. Off: the
     // first field pixel on the ray. Optics matrix seeds 1-4 with both: combined 2595 -> 2627

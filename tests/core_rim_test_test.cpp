@@ -167,6 +167,26 @@ private slots:
         QCOMPARE(rimArcRunPx(classes, geometry, roles, 100, 185, 40.0, 1.0), atSpeck);
     }
 
+    // validation.rim_arc_offset_px: a centre found off the ball's widest chord still finds it.
+    void widestArcRunReachesTheWidestChord()
+    {
+        const Geometry geometry(testGeometry(), cv::Mat());
+        const ColourRoles roles = defaultColourRoles();
+        cv::Mat classes(200, 200, CV_8UC1, cv::Scalar(int(ColorClass::Green)));
+        // A squashed ball at (100, 185): 13 px along the arc (x), 7 px towards the centre (y).
+        cv::ellipse(classes, cv::Point(100, 185), cv::Size(6, 3), 0, 0, 360, cv::Scalar(int(ColorClass::Orange)),
+                    cv::FILLED);
+        const double widestChord = rimArcRunPx(classes, geometry, roles, 100, 185, 30.0);
+        // The candidate 2 px outwards of the ball's centre: its own arc cuts the ball short.
+        const double offChord = rimArcRunPx(classes, geometry, roles, 100, 187, 30.0);
+        QVERIFY2(offChord < widestChord, qPrintable(QString("%1 %2").arg(offChord).arg(widestChord)));
+        QCOMPARE(rimWidestArcRunPx(classes, geometry, roles, 100, 187, 30.0, 0.0, 0.0), offChord);
+        const double oneOff = rimArcRunPx(classes, geometry, roles, 100, 186, 30.0);
+        QCOMPARE(rimWidestArcRunPx(classes, geometry, roles, 100, 187, 30.0, 0.0, 1.0), oneOff);
+        QVERIFY(oneOff > offChord);
+        QCOMPARE(rimWidestArcRunPx(classes, geometry, roles, 100, 187, 30.0, 0.0, 2.0), widestChord);
+    }
+
     // validation.rim_skip_inner_field: a green panel inside the ball no longer stands for the
     // carpet on its inward side.
     void closureSkipsAGreenPanelInside()
