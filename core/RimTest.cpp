@@ -102,7 +102,8 @@ double rimWidestArcRunPx(const cv::Mat& classes, const Geometry& geometry, const
     for (double o = 1.0; o <= offsetPx + 1e-9; o += 1.0)
         for (const double way : {1.0, -1.0}) {
             const double k = way * o / d;
-            widest = std::max(widest, rimArcRunPx(classes, geometry, roles, x + k * dx, y + k * dy, maxEachWayPx, carpetPx));
+            widest =
+                std::max(widest, rimArcRunPx(classes, geometry, roles, x + k * dx, y + k * dy, maxEachWayPx, carpetPx));
         }
     return widest;
 }

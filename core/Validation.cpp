@@ -626,8 +626,8 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
             const double width = rimExpectedWidthPx(c.expectedRadiusPx, squash);
             const double reach = options.rimMaxWidth * width;
             const double run = rimArcRunPx(classes, geometry, roles, c.x, c.y, reach, options.rimArcCarpetPx);
-            const double widest =
-                rimWidestArcRunPx(classes, geometry, roles, c.x, c.y, reach, options.rimArcCarpetPx, options.rimArcOffsetPx);
+            const double widest = rimWidestArcRunPx(classes, geometry, roles, c.x, c.y, reach, options.rimArcCarpetPx,
+                                                    options.rimArcOffsetPx);
             judged = widest >= options.rimMinWidth * width && run <= options.rimMaxWidth * width &&
                      rimClosure(classes, geometry, roles, c.x, c.y, c.expectedRadiusPx, squash, options.rimBandPx,
                                 options.rimInwardCos, options.rimSkipInnerField)
