@@ -626,9 +626,12 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
             const double width = rimExpectedWidthPx(c.expectedRadiusPx, squash);
             const double reach = options.rimMaxWidth * width;
             const double run = rimArcRunPx(classes, geometry, roles, c.x, c.y, reach, options.rimArcCarpetPx);
-            const double widest = rimWidestArcRunPx(classes, geometry, roles, c.x, c.y, reach, options.rimArcCarpetPx,
-                                                    options.rimArcOffsetPx);
-            judged = widest >= options.rimMinWidth * width && run <= options.rimMaxWidth * width &&
+            // The arcs beside the centre's are read only when it falls short of a ball's width.
+            const double minRun = options.rimMinWidth * width;
+            const bool wideEnough =
+                run >= minRun || rimWidestArcRunPx(classes, geometry, roles, c.x, c.y, reach, options.rimArcCarpetPx,
+                                                   options.rimArcOffsetPx) >= minRun;
+            judged = wideEnough && run <= reach &&
                      rimClosure(classes, geometry, roles, c.x, c.y, c.expectedRadiusPx, squash, options.rimBandPx,
                                 options.rimInwardCos, options.rimSkipInnerField)
                              .closedPct() >= options.rimMinClosedPct;
