@@ -512,6 +512,24 @@ std::vector<ConfigKey> buildSchema()
                           "fit_visible_border: applies only when at least this share of the rays is usable (a ball at our body "
                           "shows over half of them, a line crossing a rod about a third)",
                           [](auto& c) -> auto& { return c.validation.fitVisibleMinShare; }));
+    s.push_back(boolKey("validation.hall_rays_by_colour", false,
+                        "A ray outwards that finds no border and runs out over the hall floor to the mirror's rim (no carpet) is "
+                        "judged by colour: the ball's border is where the pixels stop differing from the floor's colour (a far ball "
+                        "at the carpet's edge, half over the floor); off: such a ray is a miss",
+                        [](auto& c) -> auto& { return c.validation.hallRaysByColour; }));
+    s.push_back(doubleKey("validation.hall_colour_step", "levels (B+G+R)", 0, 765, false,
+                          "hall_rays_by_colour: a pixel is still ball while its colour differs from the floor's (read just past "
+                          "the search band) by at least this, the three channels' absolute differences added; lower lets floor "
+                          "noise pass as ball",
+                          [](auto& c) -> auto& { return c.validation.hallColourStep; }));
+    s.push_back(doubleKey("validation.hall_reach_radii", "radii", 0, 20, false,
+                          "hall_rays_by_colour: the ray must reach the mirror's rim within this many expected radii past its band "
+                          "without meeting carpet; larger takes robots and blobs farther from the rim for the hall",
+                          [](auto& c) -> auto& { return c.validation.hallReachRadii; }));
+    s.push_back(doubleKey("validation.hall_outward_cos", "cosine", -1, 1, false,
+                          "hall_rays_by_colour: only rays within the half-angle of this cosine of the direction away from the "
+                          "mirror centre are hall rays",
+                          [](auto& c) -> auto& { return c.validation.hallOutwardCos; }));
     s.push_back(boolKey("validation.carpet_by_colour", false,
                         "Green pixels are carpet only when their hue and saturation match the carpet measured around the candidate; "
                         "green panels of a ball then count as ball (non-green test, borders); off: every green pixel is carpet",

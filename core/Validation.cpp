@@ -7,6 +7,7 @@
 #include "core/ForeignContact.h"
 #include "core/Geometry.h"
 #include "core/GreenPanelTest.h"
+#include "core/HallRay.h"
 #include "core/LineArms.h"
 #include "core/LineContact.h"
 #include "core/LineShare.h"
@@ -167,6 +168,44 @@ struct BorderRay {
     cv::Point2d hitAt;       // the border point relative to the centre, when hit
 };
 
+// px; an unprocessed pixel this close to outer_radius is the mirror's rim, not a mask: the ring's
+// last pixels round inwards, and a ray's half-pixel steps land up to 0.7 px off.
+constexpr double kRimEdgePx = 1.5;
+
+// A ray outwards that found no border and runs out over the hall floor (core/HallRay.h), judged
+// by colour: a far ball at the carpet's edge has no border into carpet on its outer side.
+void judgeHallRay(const Circle& c, double ca, double sa, double rMin, double rMax, BorderRay& ray)
+{
+    const ValidationOptions& options = c.options;
+    if (!options.hallRaysByColour || !c.colour) return;
+    const GeometryOptions& g = c.geometry.options();
+    const cv::Point2d out(c.x - g.centerX, c.y - g.centerY);
+    const double outLength = std::hypot(out.x, out.y);
+    if (!(outLength > 0.0) || (ca * out.x + sa * out.y) / outLength < options.hallOutwardCos) return;
+    // Cheap first: a ray whose reach ends short of the rim is no hall ray.
+    const double reach = options.hallReachRadii * c.radius;
+    if (outLength + rMax + reach < g.outerRadius - kRimEdgePx) return;
+    struct CircleHallPixels : HallPixels {
+        explicit CircleHallPixels(const Circle& circle) : c(circle) {}
+        bool known(cv::Point p) const override { return c.known(p); }
+        bool carpet(cv::Point p) const override { return c.carpetAt(p); }
+        bool pastRim(cv::Point p) const override
+        {
+            const GeometryOptions& go = c.geometry.options();
+            return p.x < 0 || p.y < 0 || p.x >= c.classes.cols || p.y >= c.classes.rows ||
+                   std::hypot(p.x - go.centerX, p.y - go.centerY) >= go.outerRadius - kRimEdgePx;
+        }
+        std::array<std::uint8_t, 3> bgr(cv::Point p) const override { return c.colour->bgrAt(p.x, p.y); }
+        const Circle& c;
+    };
+    const HallRay hall =
+        hallRay({cv::Point2d(c.x, c.y), ca, sa, rMax}, rMin, reach, options.hallColourStep, CircleHallPixels(c));
+    if (!hall.border) return;  // over the floor without one: judged (as it was), and not round there
+    ray.hit = true;
+    ray.hitAt = cv::Point2d(hall.borderPx * ca, hall.borderPx * sa);
+    ray.hitRadius = hall.borderPx;
+}
+
 // Walks one ray out from the centre (from the band's inner side when any edge in the band
 // counts) and looks for the ball's border between rMin and rMax. With circleFit the border is
 // the first edge into carpet anywhere up to rMax (edges into the ball's own colours are its
@@ -255,6 +294,8 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
     }
     // A ray that found no border after passing unknown pixels may have lost it behind the mask.
     ray.judged = anyUsed && (ray.hit || blocked || !(sawUnknown && options.maskedRaysUnknown));
+    if (ray.judged && !ray.hit && !blocked && !ray.occluded)
+        judgeHallRay(c, ca, sa, rMin, rMax, ray);
     return ray;
 }
 

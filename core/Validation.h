@@ -117,6 +117,17 @@ struct ValidationOptions {
     // border gap is the centre's offset plus the radius' error), so only partly hidden balls gain.
     bool fitVisibleBorder = true;
     double fitVisibleMinShare = 0.5;  // of the rays usable for it to apply (a line crossing a rod shows ~0.3)
+    // A ray outwards (within the half-angle whose cosine is hallOutwardCos of the direction away
+    // from the mirror centre) that found no border and runs out over the hall floor, reaching the
+    // mirror's rim within hallReachRadii expected radii past its band and meeting no carpet
+    // (core/HallRay.h), is judged by colour: its border is where the pixels stop differing from
+    // the floor's colour by hallColourStep. A far ball at the carpet's edge lies half over the
+    // floor, which the binary image does not part from it. Needs the frame's colours. Off: such a
+    // ray is a miss (the binary image alone).
+    bool hallRaysByColour = true;
+    double hallColourStep = 40.0;  // |dB| + |dG| + |dR|, 0..765
+    double hallReachRadii = 4.0;   // expected radii past the band
+    double hallOutwardCos = 0.3;   // cosine of the half-angle
     // A ray's border point is the edge pixel it met, not the point at the ray's step where it
     // met it (up to ~0.7 px off: the band of a 3-6 px ball is 1.5 px). Off by default: on the
     // optics matrix it found 1.3 points more balls (combined), but it also makes a blurred round
