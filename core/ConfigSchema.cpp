@@ -602,7 +602,7 @@ std::vector<ConfigKey> buildSchema()
                        [](auto& c) -> auto& { return c.validation.greenPanelMinDirections; }));
     s.push_back(doubleKey("validation.green_panel_min_own_pct", "%", 0, 100, false,
                           "green_panels: the panels count in the non-green test only when the square's non-green share by colour "
-                          "alone (the ball's white) reaches this; a green-and-white ball shows ~55 %, carpet beside a line less",
+                          "alone (the ball's white) reaches this; a green-and-white ball shows just over half, carpet beside a line less",
                           [](auto& c) -> auto& { return c.validation.greenPanelMinOwnPct; }));
     s.push_back(intKey("validation.recentre_refused", "candidates", 0, 100, false,
                        "Maxima the prefilter refused on the non-green test (a green-and-white ball's lies on its white half) are "
