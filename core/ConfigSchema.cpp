@@ -513,14 +513,15 @@ std::vector<ConfigKey> buildSchema()
                           "shows over half of them, a line crossing a rod about a third)",
                           [](auto& c) -> auto& { return c.validation.fitVisibleMinShare; }));
     s.push_back(boolKey("validation.hall_rays_by_colour", false,
-                        "A ray outwards that finds no border and runs out over the hall floor to the mirror's rim (no carpet) is "
-                        "judged by colour: the ball's border is where the pixels stop differing from the floor's colour (a far ball "
-                        "at the carpet's edge, half over the floor); off: such a ray is a miss",
+                        "A ray outwards (hall_outward_cos) that finds no border and runs out over the hall floor to the mirror's "
+                        "rim within hall_reach_radii (no carpet, no mask) is judged by colour: the ball's border is where the "
+                        "pixels stop differing from the floor's colour (a far ball at the carpet's edge, half over the floor); "
+                        "off: such a ray is a miss",
                         [](auto& c) -> auto& { return c.validation.hallRaysByColour; }));
     s.push_back(doubleKey("validation.hall_colour_step", "levels (B+G+R)", 0, 765, false,
-                          "hall_rays_by_colour: a pixel is still ball while its colour differs from the floor's (read just past "
-                          "the search band) by at least this, the three channels' absolute differences added; lower lets floor "
-                          "noise pass as ball",
+                          "hall_rays_by_colour: the border is past the outermost pixel whose colour differs from the floor's (read "
+                          "just past the search band) by at least this, the three channels' absolute differences added; lower "
+                          "lets floor noise pass as ball",
                           [](auto& c) -> auto& { return c.validation.hallColourStep; }));
     s.push_back(doubleKey("validation.hall_reach_radii", "radii", 0, 20, false,
                           "hall_rays_by_colour: the ray must reach the mirror's rim within this many expected radii past its band "

@@ -35,16 +35,16 @@ struct HallRaySpan {
 
 struct HallRay {
     bool overFloor = false;  // the ray runs out over the hall floor: judge it by colour
-    bool border = false;     // overFloor: the ball's colour ends within the band
+    bool border = false;     // overFloor: the ball's colour ends between rMinPx and rMaxPx
     double borderPx = 0.0;   // border: its distance from the centre
 };
 
 // Whether the ray runs out over the hall floor: from the band's end on, it reaches the mirror's
-// rim within reachPx and meets no carpet (two carpet samples in a row, a speck of noise does
-// not count) nor a masked pixel first. If so, its border is the outermost sample up to rMaxPx
-// whose colour differs from the floor's (the mean of the samples 1-3 px past the band) by at
-// least minStep (sum of the B, G, R differences), plus half a step, when that lies at rMinPx
-// or beyond; a ray whose ball colour ends before rMinPx, or that never differs, has none.
+// rim within reachPx and meets no carpet (two carpet pixels in a row; a speck of noise does not
+// count) nor a masked pixel first. If so, its border is half a step past the outermost sample up
+// to rMaxPx whose colour differs from the floor's (the mean of the pixels 1-3 px past the band)
+// by at least minStep (the B, G, R absolute differences added), when that lies between rMinPx
+// and rMaxPx. A ray whose colour ends before rMinPx, runs on to rMaxPx, or never differs, has none.
 HallRay hallRay(const HallRaySpan& span, double rMinPx, double reachPx, double minStep, const HallPixels& pixels);
 
 }  // namespace omnitune

@@ -168,10 +168,6 @@ struct BorderRay {
     cv::Point2d hitAt;       // the border point relative to the centre, when hit
 };
 
-// px; an unprocessed pixel this close to outer_radius is the mirror's rim, not a mask: the ring's
-// last pixels round inwards, and a ray's half-pixel steps land up to 0.7 px off.
-constexpr double kRimEdgePx = 1.5;
-
 // A ray outwards that found no border and runs out over the hall floor (core/HallRay.h), judged
 // by colour: a far ball at the carpet's edge has no border into carpet on its outer side.
 void judgeHallRay(const Circle& c, double ca, double sa, double rMin, double rMax, BorderRay& ray)
@@ -184,22 +180,25 @@ void judgeHallRay(const Circle& c, double ca, double sa, double rMin, double rMa
     if (!(outLength > 0.0) || (ca * out.x + sa * out.y) / outLength < options.hallOutwardCos) return;
     // Cheap first: a ray whose reach ends short of the rim is no hall ray.
     const double reach = options.hallReachRadii * c.radius;
-    if (outLength + rMax + reach < g.outerRadius - kRimEdgePx) return;
+    if (outLength + rMax + reach < g.outerRadius) return;
     struct CircleHallPixels : HallPixels {
         explicit CircleHallPixels(const Circle& circle) : c(circle) {}
         bool known(cv::Point p) const override { return c.known(p); }
         bool carpet(cv::Point p) const override { return c.carpetAt(p); }
+        // Outside the image (the frame ends what the mirror shows), or outside the ring; an
+        // unprocessed pixel inside it is masked.
         bool pastRim(cv::Point p) const override
         {
-            const GeometryOptions& go = c.geometry.options();
             return p.x < 0 || p.y < 0 || p.x >= c.classes.cols || p.y >= c.classes.rows ||
-                   std::hypot(p.x - go.centerX, p.y - go.centerY) >= go.outerRadius - kRimEdgePx;
+                   c.geometry.distanceAt(p.x, p.y) > c.geometry.options().outerRadius;
         }
         std::array<std::uint8_t, 3> bgr(cv::Point p) const override { return c.colour->bgrAt(p.x, p.y); }
         const Circle& c;
     };
+    // With circleFit a border anywhere up to rMax is a point for the fit, as traceBorder's.
+    const double fromPx = options.circleFit ? 0.0 : rMin;
     const HallRay hall =
-        hallRay({cv::Point2d(c.x, c.y), ca, sa, rMax}, rMin, reach, options.hallColourStep, CircleHallPixels(c));
+        hallRay({cv::Point2d(c.x, c.y), ca, sa, rMax}, fromPx, reach, options.hallColourStep, CircleHallPixels(c));
     if (!hall.border) return;  // over the floor without one: judged (as it was), and not round there
     ray.hit = true;
     ray.hitAt = cv::Point2d(hall.borderPx * ca, hall.borderPx * sa);
@@ -602,6 +601,7 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
         circle.radial = offset / offsetLength;
     }
     if (options.foreignRaysUnknown) circle.ballClass = ballClassAt(classes, roles, x, y);
+    if (colour && options.hallRaysByColour) CV_Assert(colour->frame().size() == classes.size());
     if (colour && (options.carpetByColour || options.blackByLocalCarpet)) {
         CV_Assert(colour->frame().size() == classes.size());
         circle.carpet = carpetRingAround(*colour, classes, geometry, roles, x, y, radius, options);

@@ -100,8 +100,8 @@ private slots:
         QVERIFY(!hallRay({{20, 20}, 1.0, 0.0, 9.0}, 4.0, 5.0, 40.0, px).overFloor);
     }
 
-    // Over the floor but of the floor's own colour (a floor patch), or a ball too small for the
-    // band: judged, with no border.
+    // Over the floor but of the floor's own colour (a floor patch), a ball too small for the band,
+    // or colour running on past the band's end: over the floor, with no border.
     void noColourStepIsNoBorder()
     {
         const TestPixels grey = floorScene(kFloor + cv::Scalar(10, 10, 10));
@@ -111,6 +111,9 @@ private slots:
         const HallRay small = hallRay({{20, 20}, 1.0, 0.0, 9.0}, 7.0, 20.0, 40.0, floorScene(kOrange));
         QVERIFY(small.overFloor);
         QVERIFY(!small.border);
+        const HallRay runsOn = hallRay({{20, 20}, 1.0, 0.0, 4.0}, 2.0, 20.0, 40.0, floorScene(kOrange));
+        QVERIFY(runsOn.overFloor);
+        QVERIFY(!runsOn.border);
     }
 
     // The whole validation: the far ball at the carpet's edge passes with the rule and fails as
@@ -137,8 +140,9 @@ private slots:
         QVERIFY2(floor.rejected == RejectReason::Circularity, qPrintable(verdict(floor)));
     }
 
-    // hall_colour_step and hall_reach_radii are read from the config: a step past the ball's own
-    // difference from the floor, or a reach short of the rim, leaves it not round.
+    // hall_colour_step, hall_reach_radii and hall_outward_cos are read from the config: a step past
+    // the ball's own difference from the floor, a reach short of the rim, or a cone too narrow to
+    // hold a ray, leaves it not round.
     void thresholdsAreTheConfigs()
     {
         const double d = 185.0;
@@ -153,6 +157,9 @@ private slots:
         QCOMPARE(validateAt(c, frame, p).rejected, RejectReason::Circularity);
         c.validation.hallColourStep = 40;
         c.validation.hallReachRadii = 0.5;
+        QCOMPARE(validateAt(c, frame, p).rejected, RejectReason::Circularity);
+        c.validation.hallReachRadii = 4;
+        c.validation.hallOutwardCos = 1.0;
         QCOMPARE(validateAt(c, frame, p).rejected, RejectReason::Circularity);
     }
 };
