@@ -601,11 +601,10 @@ ValidationScores scoreCircle(int x, int y, double radius, int squareSide, const 
         circle.radial = offset / offsetLength;
     }
     if (options.foreignRaysUnknown) circle.ballClass = ballClassAt(classes, roles, x, y);
-    if (colour && options.hallRaysByColour) CV_Assert(colour->frame().size() == classes.size());
-    if (colour && (options.carpetByColour || options.blackByLocalCarpet)) {
-        CV_Assert(colour->frame().size() == classes.size());
+    // Every test that reads colours (carpet ring, hall rays, run-on) reads them at class pixels.
+    if (colour) CV_Assert(colour->frame().size() == classes.size());
+    if (colour && (options.carpetByColour || options.blackByLocalCarpet))
         circle.carpet = carpetRingAround(*colour, classes, geometry, roles, x, y, radius, options);
-    }
     // The walk of the green-panel test reads classes only, never carpetAt (which asks it).
     struct CirclePanelPixels : PanelPixels {
         explicit CirclePanelPixels(const Circle& circle) : c(circle) {}
