@@ -20,8 +20,10 @@ CandidatePrefilter candidatePrefilterFor(const Config& config)
     p.validation = v;
     p.tooSmallBelowPx = v.minRadiusPx;
     // The rim test (validation.rim_test) judges circles up to rim_max_overhang_px farther out.
-    if (config.hough.prefilterRim && v.refuseAtRim)
+    if (config.hough.prefilterRim && v.refuseAtRim) {
         p.maxReachPx = config.geometry.outerRadius - v.rimMarginPx + (v.rimTest ? v.rimMaxOverhangPx : 0.0);
+        p.rimTest = config.hough.prefilterRimTest && v.rimTest;
+    }
     return p;
 }
 

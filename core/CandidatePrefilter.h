@@ -12,6 +12,9 @@
 //   so it is off then.
 // - Rim: with validation.refuse_at_rim, a circle reaching past outer_radius - rim_margin_px is
 //   refused (hough.prefilter_rim).
+// - Rim test: with hough.prefilter_rim_test (and validation.rim_test), a circle reaching the rim
+//   within that margin must also pass validation's rim judgement (core/Validation.h:
+//   rimCutBallPasses), which it would otherwise fail only after taking a slot.
 // - Non-black: the share of those pixels not of a black class. Validation's is never smaller
 //   (validation.black_by_local_carpet counts fewer pixels as black), so a maximum below
 //   hough.prefilter_non_black x validation.min_non_black_pct (a robot the ball is behind) is one
@@ -37,6 +40,9 @@ struct CandidatePrefilter {
     // nonBlackPctAt (needs the frame's colours), under these options' carpet ring and ratio.
     ValidationOptions validation;
     double maxReachPx = std::numeric_limits<double>::infinity();  // distance + expected radius, px
+    // A maximum whose circle reaches the rim must pass validation's rim judgement
+    // (rimCutBallPasses, under `validation`): hough.prefilter_rim_test. Needs the classes image.
+    bool rimTest = false;
     // A listed colour refusal whose expected radius is below this (validation.min_radius_px) is
     // named "too small", validation's first test, so the table gives the reason validation would;
     // a rim refusal keeps "outside area", which validation checks before size.

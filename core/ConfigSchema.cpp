@@ -323,6 +323,11 @@ std::vector<ConfigKey> buildSchema()
     s.push_back(boolKey("hough.prefilter_rim", false,
                         "With validation.refuse_at_rim, maxima and seeds whose circle reaches past the rim take no candidate slot",
                         [](auto& c) -> auto& { return c.hough.prefilterRim; }));
+    s.push_back(boolKey("hough.prefilter_rim_test", false,
+                        "prefilter_rim: with validation.rim_test, a maximum or seed whose circle reaches the rim takes a slot only "
+                        "when it passes that test (width, inward side, rim_min_contrast), so rim clutter does not crowd a far "
+                        "ball out of the far ring; off: every circle within rim_max_overhang_px takes one",
+                        [](auto& c) -> auto& { return c.hough.prefilterRimTest; }));
     s.push_back(doubleKey("hough.prefilter_non_black", "fraction", 0, 1, false,
                           "Hough maxima and blob seeds whose ball square is less non-black (by colour class) than this fraction "
                           "of validation.min_non_black_pct take no candidate slot (a robot beside the ball); with "
@@ -690,6 +695,12 @@ std::vector<ConfigKey> buildSchema()
                           "rim_test: a circle that passes it is validated from this expected radius on, instead of "
                           "min_radius_px (its closed inward side is what a small line corner lacks)",
                           [](auto& c) -> auto& { return c.validation.rimMinRadiusPx; }));
+    s.push_back(doubleKey("validation.rim_min_contrast", "levels (B+G+R)", 0, 765, false,
+                          "rim_test: a circle at the rim passes only when the mean colour inside it differs from the mean "
+                          "colour of its surroundings off the carpet (the hall floor, the dark past the rim) by at least this, "
+                          "the three channels' absolute differences added: a patch of dim, noisy floor has the floor's colour; "
+                          "needs the frame's colours; 0: off",
+                          [](auto& c) -> auto& { return c.validation.rimMinContrast; }));
 
     // validation of a ball touching a field line (issue 9: ball and line are one blob)
     s.push_back(boolKey("validation.line_rays_unknown", false,

@@ -278,6 +278,10 @@ bool SpecificHough::passesPrefilter(const cv::Mat& binary, int x, int y, std::in
     const double radius = expectedRadiusAt(*geometry_, *ball_, x, y);
     if (d + radius > prefilter_.maxReachPx) {
         why = RejectReason::OutsideArea;
+    } else if (prefilter_.rimTest && !classes_.empty() &&
+               !rimCutBallPasses(classes_, *geometry_, prefilter_.roles, x, y, d, radius, ball_->squashAt(d),
+                                 prefilter_.validation, colour_)) {
+        why = RejectReason::OutsideArea;
     } else if (prefilter_.minNonGreenPct > 0.0 || prefilter_.minNonBlackPct > 0.0) {
         // The square validation's colour tests read (Validation.cpp: validateCandidate).
         const int side = ball_->squareSizeAt(d, imageAngleAt(*geometry_, x, y));

@@ -33,7 +33,7 @@ struct SpecificHoughOptions {
     bool radiusAtCentre = true;     // vote with the radius at the centre's distance (see above)
     // Local maxima kept per radial area, strongest first (thesis: 1). A kept maximum suppresses
     // weaker ones closer than suppressionRadii expected radii, in its own and other areas.
-    int maximaPerArea = 2;
+    int maximaPerArea = 3;
     double suppressionRadii = 1.0;
     // Candidates per frame at most (maxima and seeds): the areas' strongest first, then their
     // second ones, and so on, so each area keeps its best. Bounds the validation time.
@@ -55,6 +55,10 @@ struct SpecificHoughOptions {
     // class-based non-green share must reach (0: off), and whether the rim test applies.
     double prefilterNonGreen = 0.85;
     bool prefilterRim = true;
+    // With prefilterRim and validation.rim_test, a maximum whose circle reaches the rim must pass
+    // validation's rim judgement too (its width, inward side and colour): rim clutter otherwise
+    // holds the far ring's slots that a far ball's weaker maximum needs.
+    bool prefilterRimTest = true;
     double prefilterNonBlack = 1.0;  // fraction of validation.min_non_black_pct (0: off)
     int prefilterChecks = 48;  // maxima tested per area at most (bounds the prefilter's time)
     // Blob seeds are flooded with the black classes counted as background (a ball beside a

@@ -12,6 +12,7 @@
 #include "core/LineContact.h"
 #include "core/LineShare.h"
 #include "core/RimTest.h"
+#include "core/SurroundContrast.h"
 
 #include <algorithm>
 #include <climits>
@@ -643,6 +644,34 @@ double requiredCircularityPct(const BallCandidate& c, const ValidationOptions& o
     return clear ? std::min(options.minCircularityPct, options.minCircularityClearPct) : options.minCircularityPct;
 }
 
+bool rimCutBallPasses(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
+                      double distancePx, double expectedRadiusPx, double ballSquash, const ValidationOptions& options,
+                      const FrameColour* colour)
+{
+    const double overhang = rimOverhangPx(distancePx, expectedRadiusPx, geometry.options().outerRadius, options.rimMarginPx);
+    if (!options.refuseAtRim || overhang <= 0.0) return true;
+    // Cut by the rim: judged only when its width and inward side show a ball on the carpet.
+    if (!options.rimTest || overhang > options.rimMaxOverhangPx) return false;
+    const double squash = options.radialSquash ? ballSquash : 1.0;
+    const double width = rimExpectedWidthPx(expectedRadiusPx, squash);
+    const double reach = options.rimMaxWidth * width;
+    const double run = rimArcRunPx(classes, geometry, roles, x, y, reach, options.rimArcCarpetPx);
+    // The arcs beside the centre's are read only when it falls short of a ball's width.
+    const double minRun = options.rimMinWidth * width;
+    const bool wideEnough = run >= minRun || rimWidestArcRunPx(classes, geometry, roles, x, y, reach,
+                                                               options.rimArcCarpetPx, options.rimArcOffsetPx) >= minRun;
+    if (!wideEnough || run > reach) return false;
+    if (rimClosure(classes, geometry, roles, x, y, expectedRadiusPx, squash, options.rimBandPx, options.rimInwardCos,
+                   options.rimSkipInnerField)
+            .closedPct() < options.rimMinClosedPct)
+        return false;
+    // And its colour is its own, not the floor's around it.
+    if (!colour || options.rimMinContrast <= 0.0) return true;
+    const std::optional<double> contrast =
+        surroundContrast(*colour, classes, geometry.usedMask(), roles, x, y, expectedRadiusPx);
+    return !contrast || *contrast >= options.rimMinContrast;
+}
+
 void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry,
                        const BallModel& ball, const ValidationOptions& options, const FrameColour* colour,
                        const ColourRoles& roles, bool stopAtColour)
@@ -659,24 +688,8 @@ void validateCandidate(BallCandidate& c, const cv::Mat& classes, const cv::Mat& 
     double minRadiusPx = options.minRadiusPx;
     const double overhang = rimOverhangPx(c.distancePx, c.expectedRadiusPx, geometry.options().outerRadius, options.rimMarginPx);
     if (options.refuseAtRim && overhang > 0.0) {
-        // Cut by the rim: judged only when its inward side and its width show a ball on the carpet.
-        bool judged = options.rimTest && overhang <= options.rimMaxOverhangPx;
-        if (judged) {
-            const double squash = options.radialSquash ? ball.squashAt(c.distancePx) : 1.0;
-            const double width = rimExpectedWidthPx(c.expectedRadiusPx, squash);
-            const double reach = options.rimMaxWidth * width;
-            const double run = rimArcRunPx(classes, geometry, roles, c.x, c.y, reach, options.rimArcCarpetPx);
-            // The arcs beside the centre's are read only when it falls short of a ball's width.
-            const double minRun = options.rimMinWidth * width;
-            const bool wideEnough =
-                run >= minRun || rimWidestArcRunPx(classes, geometry, roles, c.x, c.y, reach, options.rimArcCarpetPx,
-                                                   options.rimArcOffsetPx) >= minRun;
-            judged = wideEnough && run <= reach &&
-                     rimClosure(classes, geometry, roles, c.x, c.y, c.expectedRadiusPx, squash, options.rimBandPx,
-                                options.rimInwardCos, options.rimSkipInnerField)
-                             .closedPct() >= options.rimMinClosedPct;
-        }
-        if (!judged) {
+        if (!rimCutBallPasses(classes, geometry, roles, c.x, c.y, c.distancePx, c.expectedRadiusPx,
+                              ball.squashAt(c.distancePx), options, colour)) {
             c.rejected = RejectReason::OutsideArea;
             return;
         }

@@ -233,7 +233,9 @@ struct ValidationOptions {
     // strongest first; 0: they stay refused. One that passes validation there replaces the
     // refusal only when validation's non-green share is recentreMinPanelPct above the class
     // share: green panels (or greens not the carpet's) of its own, which a line corner lacks.
-    int recentreRefused = 8;
+    // 12: with three maxima per area, more refusals are listed and 8 left a near green-and-white
+    // ball's own unmoved (optics matrix seeds 1-4: +12 balls, no false positive more).
+    int recentreRefused = 12;
     double recentreMinNonGreenPct = 45.0;
     double recentreMinPanelPct = 15.0;
     // px; nor for smaller expected radii: in the far ring, a line's bend or its end at a rod,
@@ -275,6 +277,11 @@ struct ValidationOptions {
     // px; a candidate that passes the rim test is validated from this expected radius on (instead
     // of minRadiusPx): the closed inward side is what a line corner of that size lacks.
     double rimMinRadiusPx = 3.5;
+    // Levels (|dB| + |dG| + |dR|); a candidate at the rim passes the rim test only when its inside
+    // differs from its surroundings off the carpet by at least this (core/SurroundContrast.h): in
+    // dim, noisy light a patch of the hall floor at the rim is speckled with "green" and passes
+    // the shape. Needs the frame's colours; 0: off.
+    double rimMinContrast = 20.0;
     // A candidate that passed every test is rejected (LineJunction) when field lines leave it like
     // spokes (core/LineArms.h): two arms at less than lineArmsMaxAngleDeg, or three or more. The
     // optics matrix's false positives were junctions of the far lines near the horizon, round
@@ -329,6 +336,14 @@ double fitAllowance(double expectedRadiusPx, const ValidationOptions& options);
 // square clearMinNonBlackPct non-black or more, its expected radius clearMinRadiusPx or more) and
 // that is the lower one, else minCircularityPct.
 double requiredCircularityPct(const BallCandidate& candidate, const ValidationOptions& options);
+
+// Whether a circle at (x, y), `distancePx` from the mirror centre, passes validation's rim
+// judgement (refuse_at_rim, rim_test, rim_min_contrast): true when it does not reach the rim, or
+// when it does and its width, its inward side and its colour show a ball on the carpet's edge.
+// `ballSquash`: the ball model's squash there; `colour` (optional) for rim_min_contrast.
+bool rimCutBallPasses(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
+                      double distancePx, double expectedRadiusPx, double ballSquash, const ValidationOptions& options,
+                      const FrameColour* colour);
 
 // Scores one candidate and sets its `rejected` field (first failing test: too small, then the
 // thesis order non-green, non-black, circularity, then our run-on test). `classes` holds colour

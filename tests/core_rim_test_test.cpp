@@ -2,6 +2,7 @@
 // refused, while the rim's look-alikes (a robot's marker on its dark body, a line along the rim)
 // are still refused there.
 #include "DrawnCandidate.h"
+#include "RimDistance.h"
 #include "core/FrameColour.h"
 #include "core/RimTest.h"
 #include "core/Validation.h"
@@ -26,15 +27,6 @@ Config rimConfig(bool rimTest)
     c.ball.squashC0 = kSquash;
     c.validation.rimTest = rimTest;
     return c;
-}
-
-// A distance whose ball circle reaches `overhang` px past outer_radius - rim_margin_px.
-double distanceOverhanging(const Config& c, double overhang)
-{
-    double d = c.geometry.outerRadius;
-    for (int i = 0; i < 20; ++i)
-        d = c.geometry.outerRadius - c.validation.rimMarginPx + overhang - expectedRadius(c, d);
-    return d;
 }
 
 // The squashed ball (short axis towards the mirror centre); returns its centre.
