@@ -484,6 +484,16 @@ std::vector<ConfigKey> buildSchema()
                           "in dim light touching a grey line (both unclassified) no longer runs on along the line; lower: "
                           "faint colour differences end runs too. 0: off, the class alone",
                           [](auto& c) -> auto& { return c.validation.runOnChromaStep; }));
+    s.push_back(doubleKey("validation.run_on_hue_step", "hue (0-179)", 0, 90, false,
+                          "In the run-on test an unclassified pixel ends the run of an unclassified centre when their hues lie "
+                          "this far apart (the shorter way round), both at least run_on_hue_min_chroma in chroma: another "
+                          "object's colour, such as a robot's marker band a ball lies against in dim light; lower: noise and "
+                          "shading end runs too. 0: off",
+                          [](auto& c) -> auto& { return c.validation.runOnHueStep; }));
+    s.push_back(doubleKey("validation.run_on_hue_min_chroma", "chroma (0-255)", 0, 255, false,
+                          "run_on_hue_step: only pixels (and a centre) with at least this chroma (max - min of B, G, R) have a "
+                          "hue to compare; lower: noise on grey and dark pixels decides their hue",
+                          [](auto& c) -> auto& { return c.validation.runOnHueMinChroma; }));
     s.push_back(doubleKey("validation.min_usable_ray_share", "fraction", 0, 1, false,
                           "Circularity is judged only when this share of the circle's rays crosses processed pixels (the rest lie on "
                           "the robot body or rods); below it the candidate fails; lower: judges a mostly hidden circle by a few rays",

@@ -5,6 +5,7 @@
 #include "core/ColorClass.h"
 #include "core/ExpectedRadius.h"
 #include "core/ForeignContact.h"
+#include "core/FrameColour.h"
 #include "core/Geometry.h"
 #include "core/GreenPanelTest.h"
 #include "core/HallRay.h"
@@ -449,10 +450,23 @@ bool lineBesideColour(const std::array<std::uint8_t, 3>& pixel, const std::array
     return chroma(pixel) < chroma(centre) - step && channelMean(pixel) >= channelMean(centre);
 }
 
+// Whether an unclassified pixel is of another hue than an unclassified coloured centre
+// (run_on_hue_step): another object's colour, such as a robot's marker band beside the ball.
+// Both need run_on_hue_min_chroma, or noise on a grey or dark pixel decides its hue.
+bool otherHue(const std::array<std::uint8_t, 3>& pixel, const std::array<std::uint8_t, 3>& centre,
+              const ValidationOptions& options)
+{
+    if (options.runOnHueStep <= 0.0 || chroma(pixel) < options.runOnHueMinChroma ||
+        chroma(centre) < options.runOnHueMinChroma)
+        return false;
+    const int apart = std::abs(bgrToHsv(pixel[0], pixel[1], pixel[2]).h - bgrToHsv(centre[0], centre[1], centre[2]).h);
+    return std::min(apart, 180 - apart) >= options.runOnHueStep;
+}
+
 // Whether the centre's colour class goes on without a break along one ray out to `reach` px;
 // nothing when the ray meets black (a robot) or an unprocessed pixel: it is not judged. With
-// `centre` (run_on_chroma_step), the run also stops at unclassified line paint: the class says
-// nothing of an unclassified pixel's colour.
+// `centre` (run_on_chroma_step, run_on_hue_step), the run also stops at unclassified line paint
+// or another hue: the class says nothing of an unclassified pixel's colour.
 std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double reach,
                                 const std::optional<std::array<std::uint8_t, 3>>& centre)
 {
@@ -467,19 +481,22 @@ std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double re
             first = int(cls);
         else if (int(cls) != first)
             return false;
-        if (centre && cls == std::uint8_t(ColorClass::Unknown) &&
-            lineBesideColour(c.colour->bgrAt(p.x, p.y), *centre, c.options.runOnChromaStep))
-            return false;
+        if (centre && cls == std::uint8_t(ColorClass::Unknown)) {
+            const auto bgr = c.colour->bgrAt(p.x, p.y);
+            if ((c.options.runOnChromaStep > 0.0 && lineBesideColour(bgr, *centre, c.options.runOnChromaStep)) ||
+                otherHue(bgr, *centre, c.options))
+                return false;
+        }
     }
     return true;
 }
 
 // The mean colour of the 3x3 pixels at the centre, when the centre is unclassified and
-// run_on_chroma_step is on.
+// run_on_chroma_step or run_on_hue_step is on.
 std::optional<std::array<std::uint8_t, 3>> unclassifiedCentreColour(const Circle& c)
 {
     const cv::Point centre(c.x, c.y);
-    if (!c.colour || c.options.runOnChromaStep <= 0.0 || !c.known(centre) ||
+    if (!c.colour || (c.options.runOnChromaStep <= 0.0 && c.options.runOnHueStep <= 0.0) || !c.known(centre) ||
         c.classAt(centre) != std::uint8_t(ColorClass::Unknown))
         return std::nullopt;
     int sum[3] = {0, 0, 0};

@@ -85,6 +85,17 @@ struct ValidationOptions {
     // frames unchanged (17). "No darker": a symmetric chroma test found 2620 but also ended runs
     // along a leg's darker shading and passed two legs at the rim as balls (19).
     double runOnChromaStep = 20.0;
+    // 0..90 (OpenCV's hue, 0-179); in the run-on test an unclassified pixel also ends the run of
+    // an unclassified centre when their hues lie this far apart (the shorter way round), both
+    // with at least runOnHueMinChroma of chroma (below it noise decides the hue): another
+    // object's colour. In dim light a ball lying against a robot's marker band leaves every
+    // class, as the band does, and "ran on" along the band. A robot's or a leg's own shading
+    // keeps its hue, and still runs on. 0: off. Optics matrix, combined, balls / false-positive
+    // frames: seeds 1-4 2732 / 18 -> 2747 / 18, seeds 5-6 1347 / 16 -> 1352 / 16. A step of 12:
+    // one false-positive frame more. A chroma floor of 8 found 2753 on seeds 1-4 but passed a
+    // leg's blue trousers over a near-grey shoe (chroma 7-9) on seed 1's 2-frame sample.
+    double runOnHueStep = 20.0;
+    double runOnHueMinChroma = 12.0;  // 0..255, chroma (max - min of B, G, R); see runOnHueStep
     // Fraction of the circle's rays; rays whose whole search band lies on unprocessed pixels
     // (robot body, rods) say nothing about the shape and are left out. With fewer usable rays
     // than this share the circularity is not judged (0 %, so the candidate fails).
