@@ -450,16 +450,21 @@ bool lineBesideColour(const std::array<std::uint8_t, 3>& pixel, const std::array
     return chroma(pixel) < chroma(centre) - step && channelMean(pixel) >= channelMean(centre);
 }
 
+// An unclassified centre's colour, read once per candidate for every ray of the run-on test.
+struct CentreColour {
+    std::array<std::uint8_t, 3> bgr;
+    int hue;  // OpenCV's 0-179
+};
+
 // Whether an unclassified pixel is of another hue than an unclassified coloured centre
 // (run_on_hue_step): another object's colour, such as a robot's marker band beside the ball.
 // Both need run_on_hue_min_chroma, or noise on a grey or dark pixel decides its hue.
-bool otherHue(const std::array<std::uint8_t, 3>& pixel, const std::array<std::uint8_t, 3>& centre,
-              const ValidationOptions& options)
+bool otherHue(const std::array<std::uint8_t, 3>& pixel, const CentreColour& centre, const ValidationOptions& options)
 {
     if (options.runOnHueStep <= 0.0 || chroma(pixel) < options.runOnHueMinChroma ||
-        chroma(centre) < options.runOnHueMinChroma)
+        chroma(centre.bgr) < options.runOnHueMinChroma)
         return false;
-    const int apart = std::abs(bgrToHsv(pixel[0], pixel[1], pixel[2]).h - bgrToHsv(centre[0], centre[1], centre[2]).h);
+    const int apart = std::abs(bgrToHsv(pixel[0], pixel[1], pixel[2]).h - centre.hue);
     return std::min(apart, 180 - apart) >= options.runOnHueStep;
 }
 
@@ -468,7 +473,7 @@ bool otherHue(const std::array<std::uint8_t, 3>& pixel, const std::array<std::ui
 // `centre` (run_on_chroma_step, run_on_hue_step), the run also stops at unclassified line paint
 // or another hue: the class says nothing of an unclassified pixel's colour.
 std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double reach,
-                                const std::optional<std::array<std::uint8_t, 3>>& centre)
+                                const std::optional<CentreColour>& centre)
 {
     int first = -1;
     for (double r = 0.0; r <= reach + 1e-9; r += 0.5) {
@@ -483,7 +488,7 @@ std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double re
             return false;
         if (centre && cls == std::uint8_t(ColorClass::Unknown)) {
             const auto bgr = c.colour->bgrAt(p.x, p.y);
-            if ((c.options.runOnChromaStep > 0.0 && lineBesideColour(bgr, *centre, c.options.runOnChromaStep)) ||
+            if ((c.options.runOnChromaStep > 0.0 && lineBesideColour(bgr, centre->bgr, c.options.runOnChromaStep)) ||
                 otherHue(bgr, *centre, c.options))
                 return false;
         }
@@ -493,7 +498,7 @@ std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double re
 
 // The mean colour of the 3x3 pixels at the centre, when the centre is unclassified and
 // run_on_chroma_step or run_on_hue_step is on.
-std::optional<std::array<std::uint8_t, 3>> unclassifiedCentreColour(const Circle& c)
+std::optional<CentreColour> unclassifiedCentreColour(const Circle& c)
 {
     const cv::Point centre(c.x, c.y);
     if (!c.colour || (c.options.runOnChromaStep <= 0.0 && c.options.runOnHueStep <= 0.0) || !c.known(centre) ||
@@ -509,7 +514,8 @@ std::optional<std::array<std::uint8_t, 3>> unclassifiedCentreColour(const Circle
             for (int k = 0; k < 3; ++k) sum[k] += bgr[std::size_t(k)];
             ++n;
         }
-    return std::array<std::uint8_t, 3>{std::uint8_t(sum[0] / n), std::uint8_t(sum[1] / n), std::uint8_t(sum[2] / n)};
+    const std::array<std::uint8_t, 3> bgr{std::uint8_t(sum[0] / n), std::uint8_t(sum[1] / n), std::uint8_t(sum[2] / n)};
+    return CentreColour{bgr, bgrToHsv(bgr[0], bgr[1], bgr[2]).h};
 }
 
 // Our run-on test: the share of judged rays along which the centre's colour runs on beyond the
@@ -521,7 +527,7 @@ void scoreRunOn(const Circle& c, ValidationScores& s)
     const int rays = rayCount(c.radius);
     // A ball the fit found larger than expected is not its own colour running on.
     const double reach = options.runOnReach * std::max(c.radius, s.fitRadiusPx);
-    const std::optional<std::array<std::uint8_t, 3>> centre = unclassifiedCentreColour(c);
+    const std::optional<CentreColour> centre = unclassifiedCentreColour(c);
     int judged = 0;
     int runOn = 0;
     for (int i = 0; i < rays; ++i) {

@@ -27,6 +27,12 @@ inline cv::Point2d pointAt(const Config& c, double distance, double angleDeg)
     return {c.geometry.centerX + distance * std::cos(a), c.geometry.centerY - distance * std::sin(a)};
 }
 
+// The pixel nearest to `p`.
+inline cv::Point rounded(const cv::Point2d& p)
+{
+    return {int(std::lround(p.x)), int(std::lround(p.y))};
+}
+
 inline double expectedRadius(const Config& c, double distance)
 {
     return BallModel(c.ball).radiusAt(distance);

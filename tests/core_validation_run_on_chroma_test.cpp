@@ -32,11 +32,6 @@ cv::Point2d alongLine()
     return {-radial().y, radial().x};
 }
 
-cv::Point rounded(const cv::Point2d& p)
-{
-    return {int(std::lround(p.x)), int(std::lround(p.y))};
-}
-
 // The dim orange ball of the expected radius centred on `p`, touching a dim line half its radius
 // wide (a line is 12 cm, a ball 22 cm) on its far side: from the centre, rays towards the line
 // meet grey within the run-on reach over about a fifth of the circle.

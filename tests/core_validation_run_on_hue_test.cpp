@@ -25,14 +25,15 @@ cv::Point2d radial()
     return {std::cos(kAngle * M_PI / 180.0), std::sin(kAngle * M_PI / 180.0)};
 }
 
-cv::Point rounded(const cv::Point2d& p)
-{
-    return {int(std::lround(p.x)), int(std::lround(p.y))};
-}
-
 cv::Point centreAt(const Config& c)
 {
     return rounded(pointAt(c, kDistance, kAngle));
+}
+
+// A pixel on the band, two expected radii out from the blob's centre `p`.
+cv::Point onBand(const Config& c, cv::Point p)
+{
+    return rounded(cv::Point2d(p) + 2.0 * expectedRadius(c, kDistance) * radial());
 }
 
 // A blob of the expected radius centred on `p` with a band as wide as the blob running away from
@@ -60,9 +61,8 @@ private slots:
         const cv::Point p = centreAt(c);
         const cv::Mat frame = blobAgainstBand(c, p, kDimOrange, kDimMagenta);
         const EdgeStages s(c, frame);
-        const cv::Point q = rounded(cv::Point2d(p) + 2.0 * expectedRadius(c, kDistance) * radial());
         QCOMPARE(int(s.classes.at<std::uint8_t>(p)), 0);
-        QCOMPARE(int(s.classes.at<std::uint8_t>(q)), 0);
+        QCOMPARE(int(s.classes.at<std::uint8_t>(onBand(c, p))), 0);
     }
 
     void ballAgainstAMarkerBandPassesWithTheStep()
@@ -92,8 +92,8 @@ private slots:
     }
 
     // What still runs on: a blob going on in its own hue (a leg or a robot part in its darker
-    // shading), and near-grey pixels (chroma 10, a shoe below a leg), whose hue is noise: below the chroma floor hues are not
-    // compared, however far apart they are.
+    // shading), and near-grey pixels (chroma 10, a shoe below a leg), whose hue is noise: below
+    // the chroma floor hues are not compared, however far apart they are.
     void ownHueAndGreyStillRunOn_data()
     {
         QTest::addColumn<cv::Scalar>("blob");
@@ -110,7 +110,7 @@ private slots:
         const cv::Mat frame = blobAgainstBand(c, p, blob, band);
         const EdgeStages s(c, frame);
         QCOMPARE(int(s.classes.at<std::uint8_t>(p)), 0);
-        QCOMPARE(int(s.classes.at<std::uint8_t>(rounded(cv::Point2d(p) + 2.0 * expectedRadius(c, kDistance) * radial()))), 0);
+        QCOMPARE(int(s.classes.at<std::uint8_t>(onBand(c, p))), 0);
         const BallCandidate blobCandidate = validateAt(c, frame, p);
         QVERIFY2(blobCandidate.rejected == RejectReason::RunsOn, qPrintable(verdict(blobCandidate)));
     }
