@@ -572,14 +572,17 @@ RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& op
 }
 
 // Pale line pixels for the line-arms test (line_arms_pale): brighter than the carpet around the
-// candidate by pale_line_min_value_ratio. None without the frame's colours or a carpet seen.
+// candidate by pale_line_min_value_ratio, or at least pale_line_value_cap (bright light). None
+// without the frame's colours or a carpet seen.
 PaleLine paleLineAround(const FrameColour* colour, const cv::Mat& classes, const Geometry& geometry,
                         const ColourRoles& roles, const BallCandidate& c, const ValidationOptions& options)
 {
     if (!options.lineArmsPale || !colour) return {};
     const CarpetColour carpet = carpetRingAround(*colour, classes, geometry, roles, c.x, c.y, c.expectedRadiusPx, options);
     if (!carpet.valid()) return {};
-    return {colour, options.paleLineMaxSaturation, options.paleLineMinValueRatio * carpet.value()};
+    double minValue = options.paleLineMinValueRatio * carpet.value();
+    if (options.paleLineValueCap > 0.0) minValue = std::min(minValue, options.paleLineValueCap);
+    return {colour, options.paleLineMaxSaturation, minValue};
 }
 
 }  // namespace

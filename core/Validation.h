@@ -305,11 +305,16 @@ struct ValidationOptions {
     double lineArmsMaxAngleDeg = 150.0; // degrees; two arms farther apart are one line through
     // Pale pixels count as line for the arms (core/PaleLine.h): saturation at most
     // paleLineMaxSaturation and V at least paleLineMinValueRatio x the carpet's V around the
-    // candidate. In dim and uneven light the far lines leave the line class; their junctions then
-    // had no arms. Needs the frame's colours; off: the line class alone.
+    // candidate (or paleLineValueCap). In dim and uneven light the far lines leave the line
+    // class; their junctions then had no arms. Needs the frame's colours; off: the line class alone.
     bool lineArmsPale = true;
     int paleLineMaxSaturation = 90;      // 0..255
     double paleLineMinValueRatio = 1.4;  // x the carpet's mean V
+    // 0..255; a pale pixel this bright is bright enough whatever the carpet's V. In bright light
+    // the carpet's V passes 182, 1.4 x it lies past the sensor's 255, and no line pixel was pale:
+    // a clipped spot on a line near the rim passed as a far ball (optics matrix seeds 5-6, bright
+    // 480x480: 4 of 16 false-positive frames; seeds 1-6 found the same balls). 0: the ratio alone.
+    double paleLineValueCap = 250.0;
     // px; larger candidates are not judged: a junction looks round only at a far ball's size,
     // and a near ball's border meets lines at many angles (balls at 10-18 px were lost).
     double lineArmsMaxRadiusPx = 8.0;

@@ -278,6 +278,44 @@ private slots:
         QVERIFY2(off.rejected == RejectReason::None, qPrintable("off: " + verdict(off)));
     }
 
+    // validation.pale_line_value_cap: in bright light the carpet's V is 235, so 1.4 x it lies past
+    // 255 and the ratio alone finds no pale pixel. A junction of lines clipped at V 255 with a
+    // tint (saturation 70: no class) then has no arm and passes; the cap gives its arms back. An
+    // orange ball on the same carpet passes.
+    void brightJunctionHasPaleArms()
+    {
+        Config c;
+        const FarSpot spot = farSpot(c);  // named members, not a structured binding: lambdas capture them
+        const cv::Point p = spot.p;
+        const double r = spot.r;
+        const cv::Scalar brightGreen(60, 235, 40);
+        const cv::Scalar clippedLine(255, 240, 185);  // blue-tinted white: hue 96, saturation 70
+        auto scene = [&](bool junction) {
+            cv::Mat frame(c.geometry.imageHeight, c.geometry.imageWidth, CV_8UC3, brightGreen);
+            if (junction) {
+                cv::circle(frame, p, int(std::lround(r)), clippedLine, cv::FILLED);
+                for (double deg : {100.0, 150.0}) {
+                    const cv::Point2d dir(std::cos(deg * M_PI / 180.0), std::sin(deg * M_PI / 180.0));
+                    // 4 px wide: blurred, the middle keeps the line's colour (a 2 px line blends
+                    // into the carpet's green class)
+                    cv::line(frame, p, cv::Point(cv::Point2d(p) + dir * 5.0 * r), clippedLine, 4);
+                }
+            } else {
+                cv::circle(frame, p, int(std::lround(r)), kOrange, cv::FILLED);
+            }
+            cv::GaussianBlur(frame, frame, cv::Size(5, 5), 0.8);
+            return frame;
+        };
+        QVERIFY(c.validation.paleLineMinValueRatio * 235.0 > 255.0);  // the ratio alone finds nothing
+        const BallCandidate on = validate(c, scene(true), p);
+        QVERIFY2(on.rejected == RejectReason::LineJunction, qPrintable(verdict(on)));
+        const BallCandidate ball = validate(c, scene(false), p);
+        QVERIFY2(ball.rejected == RejectReason::None, qPrintable(verdict(ball)));
+        c.validation.paleLineValueCap = 0.0;
+        const BallCandidate off = validate(c, scene(true), p);
+        QVERIFY2(off.rejected == RejectReason::None, qPrintable("off: " + verdict(off)));
+    }
+
     // Larger candidates than line_arms_max_radius_px are not judged: the V passes when the limit
     // is set below its radius.
     void largeCandidatesAreNotJudged()
