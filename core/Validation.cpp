@@ -441,20 +441,20 @@ int channelMean(const std::array<std::uint8_t, 3>& bgr)
     return (int(bgr[0]) + int(bgr[1]) + int(bgr[2])) / 3;
 }
 
+// An unclassified centre's colour, read once per candidate for every ray of the run-on test.
+struct CentreColour {
+    int hue;     // OpenCV's 0-179
+    int chroma;  // max - min of B, G, R
+    int mean;    // mean of B, G, R
+};
+
 // Whether an unclassified pixel is line paint beside an unclassified coloured centre: greyer by
 // more than run_on_chroma_step and no darker. Only that breaks a run: a leg's or a robot's own
 // shading (darker, or as coloured) must not, or their dim parts would pass as balls.
-bool lineBesideColour(const std::array<std::uint8_t, 3>& pixel, const std::array<std::uint8_t, 3>& centre,
-                      double step)
+bool lineBesideColour(const std::array<std::uint8_t, 3>& pixel, const CentreColour& centre, double step)
 {
-    return chroma(pixel) < chroma(centre) - step && channelMean(pixel) >= channelMean(centre);
+    return chroma(pixel) < centre.chroma - step && channelMean(pixel) >= centre.mean;
 }
-
-// An unclassified centre's colour, read once per candidate for every ray of the run-on test.
-struct CentreColour {
-    std::array<std::uint8_t, 3> bgr;
-    int hue;  // OpenCV's 0-179
-};
 
 // Whether an unclassified pixel is of another hue than an unclassified coloured centre
 // (run_on_hue_step): another object's colour, such as a robot's marker band beside the ball.
@@ -462,7 +462,7 @@ struct CentreColour {
 bool otherHue(const std::array<std::uint8_t, 3>& pixel, const CentreColour& centre, const ValidationOptions& options)
 {
     if (options.runOnHueStep <= 0.0 || chroma(pixel) < options.runOnHueMinChroma ||
-        chroma(centre.bgr) < options.runOnHueMinChroma)
+        centre.chroma < options.runOnHueMinChroma)
         return false;
     const int apart = std::abs(bgrToHsv(pixel[0], pixel[1], pixel[2]).h - centre.hue);
     return std::min(apart, 180 - apart) >= options.runOnHueStep;
@@ -488,7 +488,7 @@ std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double re
             return false;
         if (centre && cls == std::uint8_t(ColorClass::Unknown)) {
             const auto bgr = c.colour->bgrAt(p.x, p.y);
-            if ((c.options.runOnChromaStep > 0.0 && lineBesideColour(bgr, centre->bgr, c.options.runOnChromaStep)) ||
+            if ((c.options.runOnChromaStep > 0.0 && lineBesideColour(bgr, *centre, c.options.runOnChromaStep)) ||
                 otherHue(bgr, *centre, c.options))
                 return false;
         }
@@ -515,7 +515,7 @@ std::optional<CentreColour> unclassifiedCentreColour(const Circle& c)
             ++n;
         }
     const std::array<std::uint8_t, 3> bgr{std::uint8_t(sum[0] / n), std::uint8_t(sum[1] / n), std::uint8_t(sum[2] / n)};
-    return CentreColour{bgr, bgrToHsv(bgr[0], bgr[1], bgr[2]).h};
+    return CentreColour{bgrToHsv(bgr[0], bgr[1], bgr[2]).h, chroma(bgr), channelMean(bgr)};
 }
 
 // Our run-on test: the share of judged rays along which the centre's colour runs on beyond the
