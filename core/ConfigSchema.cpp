@@ -771,8 +771,8 @@ std::vector<ConfigKey> buildSchema()
                           [](auto& c) -> auto& { return c.validation.paleLineMinValueRatio; }));
     s.push_back(doubleKey("validation.pale_line_value_cap", "V (0-255)", 0, 255, false,
                           "line_arms_pale: a pale pixel at least this bright (V) is bright enough whatever the carpet's V. In "
-                          "bright light pale_line_min_value_ratio x the carpet's V lies past 255 and no line pixel was pale: a line "
-                          "ending at the rim passed as a far ball; 0: the ratio alone",
+                          "bright light pale_line_min_value_ratio x the carpet's V lies past 255 and no line pixel was pale: a "
+                          "clipped spot on a line near the rim passed as a far ball; 0: the ratio alone",
                           [](auto& c) -> auto& { return c.validation.paleLineValueCap; }));
     s.push_back(doubleKey("validation.line_arms_max_radius_px", "px", 0, 100, false,
                           "line_arms: candidates whose expected radius is larger are not judged (a line junction looks round only "

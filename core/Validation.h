@@ -313,7 +313,7 @@ struct ValidationOptions {
     // 0..255; a pale pixel this bright is bright enough whatever the carpet's V. In bright light
     // the carpet's V passes 182, 1.4 x it lies past the sensor's 255, and no line pixel was pale:
     // a clipped spot on a line near the rim passed as a far ball (optics matrix seeds 5-6, bright
-    // 480x480: 4 of 16 false-positive frames; seeds 1-6 found the same balls). 0: the ratio alone.
+    // 480x480: 4 of 16 false-positive frames; as many balls found on seeds 1-6). 0: the ratio alone.
     double paleLineValueCap = 250.0;
     // px; larger candidates are not judged: a junction looks round only at a far ball's size,
     // and a near ball's border meets lines at many angles (balls at 10-18 px were lost).

@@ -91,6 +91,46 @@ cv::Point drawScene(cv::Mat& frame, const Config& c, Scene scene)
 
 BallCandidate validate(const Config& c, const cv::Mat& frame, cv::Point p) { return validateAt(c, frame, p); }
 
+// A junction of two lines (or an orange ball) on a carpet, in colours no class holds: only pale
+// line pixels (validation.line_arms_pale) can give the junction its arms.
+struct PaleScene {
+    cv::Scalar carpet;
+    cv::Scalar line;
+    int lineWidth = 2;
+
+    cv::Mat draw(const Config& c, const FarSpot& spot, bool junction) const
+    {
+        cv::Mat frame(c.geometry.imageHeight, c.geometry.imageWidth, CV_8UC3, carpet);
+        const int ri = int(std::lround(spot.r));
+        if (junction) {
+            cv::circle(frame, spot.p, ri, line, cv::FILLED);
+            for (double deg : {100.0, 150.0}) {
+                const cv::Point2d dir(std::cos(deg * M_PI / 180.0), std::sin(deg * M_PI / 180.0));
+                cv::line(frame, spot.p, cv::Point(cv::Point2d(spot.p) + dir * 5.0 * spot.r), line, lineWidth);
+            }
+        } else {
+            cv::circle(frame, spot.p, ri, kOrange, cv::FILLED);
+        }
+        cv::GaussianBlur(frame, frame, cv::Size(5, 5), 0.8);
+        return frame;
+    }
+};
+
+// The junction is a line junction and the ball passes; with `off` applied the junction passes,
+// so it is the pale pixels that gave it its arms.
+void checkPaleArms(const PaleScene& scene, void (*off)(Config&))
+{
+    Config c;
+    const FarSpot spot = farSpot(c);
+    const BallCandidate on = validate(c, scene.draw(c, spot, true), spot.p);
+    QVERIFY2(on.rejected == RejectReason::LineJunction, qPrintable(verdict(on)));
+    const BallCandidate ball = validate(c, scene.draw(c, spot, false), spot.p);
+    QVERIFY2(ball.rejected == RejectReason::None, qPrintable(verdict(ball)));
+    off(c);
+    const BallCandidate without = validate(c, scene.draw(c, spot, true), spot.p);
+    QVERIFY2(without.rejected == RejectReason::None, qPrintable("off: " + verdict(without)));
+}
+
 }  // namespace
 
 class ValidationFpLineArmsTest : public QObject {
@@ -249,33 +289,8 @@ private slots:
     // passes; its pale pixels give its two arms back. An orange ball on the same carpet passes.
     void dimJunctionHasPaleArms()
     {
-        Config c;
-        const FarSpot spot = farSpot(c);  // named members, not a structured binding: lambdas capture them
-        const cv::Point p = spot.p;
-        const double r = spot.r;
-        const cv::Scalar dimGreen(25, 70, 25);
-        const cv::Scalar grey(120, 120, 120);
-        auto scene = [&](bool junction) {
-            cv::Mat frame(c.geometry.imageHeight, c.geometry.imageWidth, CV_8UC3, dimGreen);
-            if (junction) {
-                cv::circle(frame, p, int(std::lround(r)), grey, cv::FILLED);
-                for (double deg : {100.0, 150.0}) {
-                    const cv::Point2d dir(std::cos(deg * M_PI / 180.0), std::sin(deg * M_PI / 180.0));
-                    cv::line(frame, p, cv::Point(cv::Point2d(p) + dir * 5.0 * r), grey, 2);
-                }
-            } else {
-                cv::circle(frame, p, int(std::lround(r)), kOrange, cv::FILLED);
-            }
-            cv::GaussianBlur(frame, frame, cv::Size(5, 5), 0.8);
-            return frame;
-        };
-        const BallCandidate on = validate(c, scene(true), p);
-        QVERIFY2(on.rejected == RejectReason::LineJunction, qPrintable(verdict(on)));
-        const BallCandidate ball = validate(c, scene(false), p);
-        QVERIFY2(ball.rejected == RejectReason::None, qPrintable(verdict(ball)));
-        c.validation.lineArmsPale = false;
-        const BallCandidate off = validate(c, scene(true), p);
-        QVERIFY2(off.rejected == RejectReason::None, qPrintable("off: " + verdict(off)));
+        const PaleScene dim{cv::Scalar(25, 70, 25), cv::Scalar(120, 120, 120), 2};
+        checkPaleArms(dim, [](Config& c) { c.validation.lineArmsPale = false; });
     }
 
     // validation.pale_line_value_cap: in bright light the carpet's V is 235, so 1.4 x it lies past
@@ -284,36 +299,11 @@ private slots:
     // orange ball on the same carpet passes.
     void brightJunctionHasPaleArms()
     {
-        Config c;
-        const FarSpot spot = farSpot(c);  // named members, not a structured binding: lambdas capture them
-        const cv::Point p = spot.p;
-        const double r = spot.r;
-        const cv::Scalar brightGreen(60, 235, 40);
-        const cv::Scalar clippedLine(255, 240, 185);  // blue-tinted white: hue 96, saturation 70
-        auto scene = [&](bool junction) {
-            cv::Mat frame(c.geometry.imageHeight, c.geometry.imageWidth, CV_8UC3, brightGreen);
-            if (junction) {
-                cv::circle(frame, p, int(std::lround(r)), clippedLine, cv::FILLED);
-                for (double deg : {100.0, 150.0}) {
-                    const cv::Point2d dir(std::cos(deg * M_PI / 180.0), std::sin(deg * M_PI / 180.0));
-                    // 4 px wide: blurred, the middle keeps the line's colour (a 2 px line blends
-                    // into the carpet's green class)
-                    cv::line(frame, p, cv::Point(cv::Point2d(p) + dir * 5.0 * r), clippedLine, 4);
-                }
-            } else {
-                cv::circle(frame, p, int(std::lround(r)), kOrange, cv::FILLED);
-            }
-            cv::GaussianBlur(frame, frame, cv::Size(5, 5), 0.8);
-            return frame;
-        };
-        QVERIFY(c.validation.paleLineMinValueRatio * 235.0 > 255.0);  // the ratio alone finds nothing
-        const BallCandidate on = validate(c, scene(true), p);
-        QVERIFY2(on.rejected == RejectReason::LineJunction, qPrintable(verdict(on)));
-        const BallCandidate ball = validate(c, scene(false), p);
-        QVERIFY2(ball.rejected == RejectReason::None, qPrintable(verdict(ball)));
-        c.validation.paleLineValueCap = 0.0;
-        const BallCandidate off = validate(c, scene(true), p);
-        QVERIFY2(off.rejected == RejectReason::None, qPrintable("off: " + verdict(off)));
+        // Blue-tinted white (hue 96); 4 px wide, so that blurred the middle keeps the line's colour
+        // (a 2 px line blends into the carpet's green class).
+        const PaleScene bright{cv::Scalar(60, 235, 40), cv::Scalar(255, 240, 185), 4};
+        QVERIFY(Config{}.validation.paleLineMinValueRatio * 235.0 > 255.0);  // the ratio alone finds nothing
+        checkPaleArms(bright, [](Config& c) { c.validation.paleLineValueCap = 0.0; });
     }
 
     // Larger candidates than line_arms_max_radius_px are not judged: the V passes when the limit
