@@ -201,6 +201,50 @@ private slots:
         QVERIFY(listed);
     }
 
+    // Maxima refused at the rim give way too: two whole discs whose circles reach past the
+    // prefilter's reach (cut by the rim, as validation would refuse them) out-vote a ball in the
+    // same radial area whose border merges on its outer side with a robot's black body; with the
+    // rim prefilter they take no slot and the ball keeps one. The colour prefilter is off in both
+    // runs: the decoys pass it (they are the ball's colour), so only the rim can free the slots.
+    void rimMaximaGiveWay()
+    {
+        Config c = twoSlots();
+        c.ball.c0 = 8.0;  // one radius everywhere: every disc's full circle votes alike
+        c.ball.c1 = 0.0;
+        c.ball.c2 = 0.0;
+        c.hough.prefilterNonGreen = 0;
+        c.hough.prefilterNonBlack = 0;
+        c.validation.rimTest = false;
+        c.validation.rimMarginPx = 8;  // the reach ends at 232 px
+        const double ballAt = 212, decoyAt = 229;  // both in the area 205..240
+        QVERIFY(decoyAt + 8 > c.geometry.outerRadius - c.validation.rimMarginPx);
+        QVERIFY(decoyAt + 8 < c.geometry.outerRadius);  // but whole in the image's ring
+        cv::Mat frame = greenField(c);
+        const cv::Point ball = drawBall(frame, c, ballAt, 30);
+        // A robot's body the ball touches: ball and body are one non-green blob, so the ball's
+        // border there has no edge and its maximum is weaker than a whole disc's.
+        // The body: an 8 px thick bar across the ball's outward direction, centred 2 px past its
+        // border (so it covers the border), 84 px long.
+        const cv::Point2d outward = (pointAt(c, ballAt + 14, 30) - pointAt(c, ballAt, 30)) / 14.0;
+        const cv::Point2d across(-outward.y, outward.x);
+        const cv::Point2d bodyAt = pointAt(c, ballAt + 8 + 2, 30);
+        cv::line(frame, bodyAt + across * 42, bodyAt - across * 42, kBlack, 8);
+        drawBall(frame, c, decoyAt, 200);
+        drawBall(frame, c, decoyAt, 260);
+        Config rimOff = c;
+        rimOff.hough.prefilterRim = false;
+        int dropped = 0;
+        QVERIFY(!candidateAt(rimOff, frame, ball, &dropped));  // the decoys take both slots
+        QCOMPARE(dropped, 0);
+        QVERIFY(candidateAt(c, frame, ball, &dropped));
+        QVERIFY(dropped >= 2);
+        // And the pipeline finds it.
+        PipelineResult r;
+        Pipeline(c).process(frame, PixelFormat::Bgr8, r);
+        QVERIFY(r.detection.found);
+        QVERIFY(near(r.detection.px, r.detection.py, ball));
+    }
+
     // The shares count processed pixels only, by colour class.
     void squareSharesCountProcessedPixels()
     {
