@@ -115,6 +115,7 @@ int runQualityTool(const CommandLine& cl)
         if (!missCause) return fail("--miss-cause '" + *name + "' is not a cause of a miss (see the --misses table's columns)");
     }
     runOptions.recordMisses = cl.has("miss-list");
+    runOptions.explainRejections = cl.has("misses");
     std::vector<OpticsCell> cells = qualityMatrixCells(matrix);
     if (auto parts = cl.value("cells")) {
         cells = filterOpticsCells(cells, *parts);

@@ -129,6 +129,7 @@ struct Pipeline::Impl {
     cv::Mat edges;
     const FrameColour* colour = nullptr;  // the frame being processed, for validation
     bool explainRejections = false;       // setExplainRejections
+    bool listEveryRefusal = false;        // setListEveryRefusal
 
     const Geometry& geometry() const { return frontEnd.geometry(); }
 
@@ -144,15 +145,19 @@ struct Pipeline::Impl {
     // Thesis 4.1: candidates from the specific Hough transform, validated.
     void searchSpecific(PipelineResult& r, Stopwatch& clock)
     {
+        hough.setListEveryRefusal(listEveryRefusal);
         hough.process(edges, binary, r.candidates, r.classes, colour);
         r.hough = hough.stats();
         r.timings.houghMs += clock.lap();
-        // The prefilter's listed refusals come last and are already judged.
-        const std::size_t judged = r.candidates.size() - std::size_t(r.hough.prefilterListed);
+        // The prefilter's listed refusals (and with listEveryRefusal the unlisted ones) come last
+        // and are already judged; only the listed ones get a second look, so listing every one
+        // changes no verdict.
+        const std::size_t listed = std::size_t(r.hough.prefilterListed);
+        const std::size_t judged = r.candidates.size() - listed - std::size_t(r.hough.prefilterUnlisted);
         if (judged > 0) validateFrom(0, r, judged);
         if (colour && config.validation.recentreRefused > 0) {
-            const RecentreCounts n = recentreRefusals(r.candidates, judged, binary, r.classes, edges, geometry(), ball,
-                                                      config.validation, *colour, frontEnd.roles());
+            const RecentreCounts n = recentreRefusals(r.candidates, judged, judged + listed, binary, r.classes, edges,
+                                                      geometry(), ball, config.validation, *colour, frontEnd.roles());
             r.hough.recentreTried = n.tried;
             r.hough.recentred = n.kept;
             r.hough.prefilterListed -= n.kept;
@@ -209,12 +214,15 @@ void Pipeline::setConfig(const Config& config)
     if (!problems.empty()) throw std::invalid_argument(problems.front().toString());
     auto built = std::make_unique<Impl>(config);  // only a fully built pipeline replaces the old one
     built->explainRejections = impl_ && impl_->explainRejections;
+    built->listEveryRefusal = impl_ && impl_->listEveryRefusal;
     impl_ = std::move(built);
 }
 
 const Config& Pipeline::config() const { return impl_->config; }
 
 void Pipeline::setExplainRejections(bool on) { impl_->explainRejections = on; }
+
+void Pipeline::setListEveryRefusal(bool on) { impl_->listEveryRefusal = on; }
 
 void Pipeline::reset() {}
 

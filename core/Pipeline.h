@@ -35,6 +35,13 @@ public:
     // (hough.prefilter_*) are never validated either way.
     void setExplainRejections(bool on);
 
+    // Whether the candidate prefilter lists every refusal (SpecificHough::setListEveryRefusal),
+    // after the strongest few it always lists: the evaluation's miss diagnosis then tells a ball
+    // refused past that cap from one no search found. The extra rows come after the specific
+    // search's, are never judged again and change no verdict. Off, as on the robot and in the
+    // window, whose panes would drown in them.
+    void setListEveryRefusal(bool on);
+
     // Forgets running statistics (none today); here so every stage has the same shape.
     void reset();
 

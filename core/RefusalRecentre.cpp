@@ -32,7 +32,8 @@ cv::Point2d centroidOnce(const FrameColour& colour, const cv::Mat& classes, cons
 
 }  // namespace
 
-RecentreCounts recentreRefusals(std::vector<BallCandidate>& candidates, std::size_t first, const cv::Mat& binary,
+RecentreCounts recentreRefusals(std::vector<BallCandidate>& candidates, std::size_t first, std::size_t end,
+                                const cv::Mat& binary,
                                 const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry,
                                 const BallModel& ball, const ValidationOptions& options, const FrameColour& colour,
                                 const ColourRoles& roles)
@@ -41,7 +42,8 @@ RecentreCounts recentreRefusals(std::vector<BallCandidate>& candidates, std::siz
         return q.x >= 0 && q.y >= 0 && q.x < classes.cols && q.y < classes.rows && geometry.isUsed(q.x, q.y);
     };
     RecentreCounts n;
-    for (std::size_t i = first; i < candidates.size() && n.tried < options.recentreRefused; ++i) {
+    CV_Assert(first <= end && end <= candidates.size());
+    for (std::size_t i = first; i < end && n.tried < options.recentreRefused; ++i) {
         const BallCandidate& refused = candidates[i];
         if (refused.rejected != RejectReason::NonGreen || refused.scores.nonGreenPct < options.recentreMinNonGreenPct ||
             refused.expectedRadiusPx < options.recentreMinRadiusPx)

@@ -31,7 +31,8 @@ struct RecentreCounts {
 // there replaces its refusal and moves to the front of [first, end), so that the refusals stay
 // the tail (the window shows the tail's shape as never measured): [first, first + kept) are
 // the kept ones. `binary` is the front end's (0 = non-green), for the class share.
-RecentreCounts recentreRefusals(std::vector<BallCandidate>& candidates, std::size_t first, const cv::Mat& binary,
+RecentreCounts recentreRefusals(std::vector<BallCandidate>& candidates, std::size_t first, std::size_t end,
+                                const cv::Mat& binary,
                                 const cv::Mat& classes, const cv::Mat& edges, const Geometry& geometry,
                                 const BallModel& ball, const ValidationOptions& options, const FrameColour& colour,
                                 const ColourRoles& roles);

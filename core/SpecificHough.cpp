@@ -124,6 +124,7 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
     CV_Assert(binary.type() == CV_8UC1 && binary.size() == size);
     stats_ = HoughStats{};
     dropped_.clear();
+    unlisted_.clear();
     vote(edges, binary);
     sum3x3();
     // Seeds keep up to a quarter of the candidate budget; the maxima get the rest.
@@ -166,7 +167,9 @@ void SpecificHough::process(const cv::Mat& edges, const cv::Mat& binary, std::ve
         }
     }
     for (const BallCandidate& d : dropped_) candidates.push_back(d);
+    for (const BallCandidate& d : unlisted_) candidates.push_back(d);
     stats_.prefilterListed = int(dropped_.size());
+    stats_.prefilterUnlisted = int(unlisted_.size());
     classes_ = cv::Mat();  // holds no reference to the caller's image between calls
     colour_ = nullptr;
 }
@@ -298,7 +301,8 @@ bool SpecificHough::passesPrefilter(const cv::Mat& binary, int x, int y, std::in
     }
     if (why == RejectReason::None) return true;
     ++stats_.prefiltered;
-    if (list && dropped_.size() < dropped_.capacity()) {
+    const bool listed = list && dropped_.size() < dropped_.capacity();
+    if (listed || listEveryRefusal_) {
         BallCandidate c = candidateAt(x, y, sum, source);
         // A colour refusal is named as validation would name it; a rim refusal stays one, as there.
         c.rejected = why != RejectReason::OutsideArea && c.expectedRadiusPx < prefilter_.tooSmallBelowPx
@@ -307,7 +311,7 @@ bool SpecificHough::passesPrefilter(const cv::Mat& binary, int x, int y, std::in
         c.scores.nonGreenPct = shares.nonGreenPct;
         c.scores.nonBlackPct = shares.nonBlackPct;
         c.scores.squareMeasured = why != RejectReason::OutsideArea;
-        dropped_.push_back(c);
+        (listed ? dropped_ : unlisted_).push_back(c);
     }
     return false;
 }

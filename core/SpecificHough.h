@@ -79,6 +79,9 @@ struct HoughStats {
     // after the candidates, rejected with the prefilter's reason and not validated: the table
     // and the miss diagnosis still see what was at the ball.
     int prefilterListed = 0;
+    // Only with setListEveryRefusal: the refusals past that cap, listed after those (the miss
+    // diagnosis then tells a refused ball from one no search found).
+    int prefilterUnlisted = 0;
     // Set by the pipeline after validation (validation.recentre_refused): refusals moved to the
     // centroid of what is not carpet and validated again, and how many of them passed (those
     // are validated candidates now, and no longer counted in prefilterListed).
@@ -105,6 +108,10 @@ public:
 
     const HoughStats& stats() const { return stats_; }
 
+    // Whether every prefilter refusal is listed, not only the strongest few (the evaluation's
+    // miss diagnosis; the robot needs only the search). The extra ones come last. Off by default.
+    void setListEveryRefusal(bool on) { listEveryRefusal_ = on; }
+
     // CV_16UC1 votes and CV_32SC1 3x3 sums of the last process() call.
     const cv::Mat& accumulator() const { return accumulator_; }
     const cv::Mat& sums() const { return sums_; }
@@ -127,7 +134,8 @@ private:
     // Fills best_ with at most `cap` kept maxima, in the order they become candidates.
     void findMaxima(const cv::Mat& binary, int cap);
     // Whether a maximum or seed at (x, y) passes the prefilter (counted in stats_ when not);
-    // when not and `list`, it joins dropped_ (while there is room) as `source`.
+    // when not and `list`, it joins dropped_ (while there is room) as `source`; otherwise, with
+    // listEveryRefusal_, unlisted_.
     bool passesPrefilter(const cv::Mat& binary, int x, int y, std::int32_t sum, CandidateSource source, bool list);
     BallCandidate candidateAt(int x, int y, std::int32_t sum, CandidateSource source) const;
 
@@ -151,6 +159,8 @@ private:
     std::vector<Peak> kept_;
     std::vector<BallCandidate> best_;
     std::vector<BallCandidate> dropped_;  // listed prefilter refusals (capacity fixed at construction)
+    std::vector<BallCandidate> unlisted_;  // the other refusals, with listEveryRefusal_
+    bool listEveryRefusal_ = false;
     HoughStats stats_;
     CandidatePrefilter prefilter_;
     cv::Mat seedBinary_;  // binary without the black classes, for the seeds

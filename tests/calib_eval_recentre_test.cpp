@@ -38,7 +38,8 @@ private slots:
             for (const cv::Mat& frame : rendered.frames) {
                 pipeline.process(frame, PixelFormat::Bgr8, r);
                 QVERIFY(r.hough.recentred <= r.hough.recentreTried);
-                const std::size_t tail = r.candidates.size() - std::size_t(r.hough.prefilterListed);
+                const std::size_t tail =
+                    r.candidates.size() - std::size_t(r.hough.prefilterListed + r.hough.prefilterUnlisted);
                 for (std::size_t i = tail; i < r.candidates.size(); ++i) {
                     const RejectReason why = r.candidates[i].rejected;
                     QVERIFY(why != RejectReason::None && why != RejectReason::NotChosen);

@@ -245,6 +245,48 @@ private slots:
         QVERIFY(near(r.detection.px, r.detection.py, ball));
     }
 
+    // The robot lists only the strongest refusals per area; the miss diagnosis
+    // (Pipeline::setListEveryRefusal) lists every one, after those, without changing a verdict:
+    // otherwise a ball refused behind the cap reads as "no candidate".
+    void everyRefusalIsListedWhenAsked()
+    {
+        const Config c = twoSlots();
+        cv::Mat frame = greenField(c);
+        const cv::Point ball = drawBall(frame, c, 158, 30);
+        std::vector<cv::Point> decoys;
+        for (double angle : {110.0, 170.0, 230.0, 290.0}) decoys.push_back(drawBall(frame, c, 145, angle, kBlack));
+        auto refusedAt = [&](const PipelineResult& r, cv::Point p) {
+            for (const auto& k : r.candidates)
+                if (near(k.x, k.y, p, 3.0) && k.rejected == RejectReason::NonBlack) return true;
+            return false;
+        };
+        Pipeline robot(c);
+        Pipeline explaining(c);
+        explaining.setListEveryRefusal(true);
+        explaining.setConfig(c);  // the setting outlives a new config
+        PipelineResult fast;
+        PipelineResult full;
+        robot.process(frame, PixelFormat::Bgr8, fast);
+        explaining.process(frame, PixelFormat::Bgr8, full);
+        QVERIFY(fast.detection.found);
+        QVERIFY(near(fast.detection.px, fast.detection.py, ball));
+        QCOMPARE(full.detection.px, fast.detection.px);
+        QCOMPARE(full.detection.py, fast.detection.py);
+        QCOMPARE(fast.hough.prefilterUnlisted, 0);
+        QVERIFY(fast.hough.prefilterListed > 0);
+        int listedByRobot = 0;
+        for (const cv::Point& d : decoys) {
+            listedByRobot += refusedAt(fast, d);
+            QVERIFY(refusedAt(full, d));
+        }
+        QVERIFY(listedByRobot < int(decoys.size()));
+        QCOMPARE(full.hough.prefilterListed, fast.hough.prefilterListed);
+        QCOMPARE(full.hough.prefilterUnlisted, int(decoys.size()) - listedByRobot);
+        // The unlisted come last.
+        for (std::size_t i = full.candidates.size() - std::size_t(full.hough.prefilterUnlisted); i < full.candidates.size(); ++i)
+            QCOMPARE(full.candidates[i].rejected, RejectReason::NonBlack);
+    }
+
     // The shares count processed pixels only, by colour class.
     void squareSharesCountProcessedPixels()
     {

@@ -272,27 +272,34 @@ void CandidateModelTest::candidateAccessor()
     QCOMPARE(model.index(1, Col::CircularityColumn).data(CandidateTableModel::SortRole).toDouble(), 41.66);
 }
 
-// The specific search lists its prefilter refusals after its candidates, and OpenCV's circles
-// come after them: the refusals' circularity and run-on were never measured, and say so.
+// The specific search lists its prefilter refusals after its candidates (with every refusal
+// listed: the strongest per area, then the rest), and OpenCV's circles come after them: the
+// refusals' circularity and run-on were never measured, and say so.
 void CandidateModelTest::prefilterRefusalsShowNoShape()
 {
     PipelineResult r = twoCandidates();
     BallCandidate refused = makeCandidate(CandidateSource::SpecificHough, 3, 200, 100, RejectReason::NonGreen);
     refused.scores = colourOnly(40.0, 100.0);
-    r.candidates.insert(r.candidates.begin() + 1, refused);  // before OpenCV's circle
+    BallCandidate pastTheCap = makeCandidate(CandidateSource::SpecificHough, 4, 210, 90, RejectReason::NonGreen);
+    pastTheCap.scores = colourOnly(30.0, 100.0);
+    r.candidates.insert(r.candidates.begin() + 1, {refused, pastTheCap});  // before OpenCV's circle
     r.hough.prefilterListed = 1;
+    r.hough.prefilterUnlisted = 1;
     CandidateTableModel model;
     model.setResult(r, Config{});
     QVERIFY(!model.isPrefiltered(0));
     QVERIFY(model.isPrefiltered(1));
-    QVERIFY(!model.isPrefiltered(2));
+    QVERIFY(model.isPrefiltered(2));
+    QVERIFY(!model.isPrefiltered(3));
     QCOMPARE(model.index(1, Col::CircularityColumn).data().toString(), QString("-"));
     QCOMPARE(model.index(1, Col::RunOnColumn).data().toString(), QString("-"));
     QCOMPARE(model.index(1, Col::NonGreenColumn).data().toString(), QString("40.0"));
+    QCOMPARE(model.index(2, Col::CircularityColumn).data().toString(), QString("-"));
     QVERIFY(!model.index(1, Col::CircularityColumn).data(CandidateTableModel::SortRole).isValid());
     QVERIFY(model.index(1, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Not validated"));
-    QCOMPARE(model.index(2, Col::CircularityColumn).data().toString(), QString("41.7"));
-    QVERIFY(!model.index(2, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Not validated"));
+    QVERIFY(model.index(2, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Not validated"));
+    QCOMPARE(model.index(3, Col::CircularityColumn).data().toString(), QString("41.7"));
+    QVERIFY(!model.index(3, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Not validated"));
 }
 
 // validation.recentre_refused validates a refusal again at a new centre and puts the ones that

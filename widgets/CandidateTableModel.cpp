@@ -47,10 +47,11 @@ void CandidateTableModel::setResult(const PipelineResult& result, const Config& 
 {
     beginResetModel();
     candidates_ = result.candidates;
-    // The specific search lists its prefilter refusals after its own candidates, the recentred
-    // ones first (OpenCV's circles, appended later, are never prefiltered).
+    // The specific search lists its prefilter refusals (with Pipeline::setListEveryRefusal every
+    // one) after its own candidates, the recentred ones first (OpenCV's circles, appended later,
+    // are never prefiltered).
     kinds_.assign(candidates_.size(), RowKind::Searched);
-    int listed = result.hough.prefilterListed;
+    int listed = result.hough.prefilterListed + result.hough.prefilterUnlisted;
     int recentred = result.hough.recentred;
     for (std::size_t i = candidates_.size(); i-- > 0 && listed + recentred > 0;) {
         if (candidates_[i].source == CandidateSource::OpenCvHough) continue;

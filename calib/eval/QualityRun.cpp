@@ -133,7 +133,8 @@ public:
             try {
                 if (!slot) {
                     slot = std::make_unique<Pipeline>(config);
-                    slot->setExplainRejections(options_.recordMisses);
+                    slot->setExplainRejections(options_.recordMisses || options_.explainRejections);
+                    slot->setListEveryRefusal(options_.recordMisses || options_.explainRejections);
                 }
             } catch (const std::exception& e) {
                 throw std::invalid_argument(cr.name + " (" + variant.name + "): the fitted config is refused: " + e.what());

@@ -109,10 +109,15 @@ struct QualityRunOptions {
     // default colours (the matrix as the gate runs it).
     int autoColourFrames = 0;
     // Keep a MissedFrame (with its crop) for every missed ball frame (omnitune-eval --miss-list).
-    // Its pipelines then also score what they reject (Pipeline::setExplainRejections), so each
-    // miss shows the scores of the candidate at the ball; per-frame times are the robot's only
-    // without it.
+    // Its pipelines then also score what they reject (Pipeline::setExplainRejections) and list
+    // every prefilter refusal, so each miss shows the scores of the candidate at the ball;
+    // per-frame times are the robot's only without it.
     bool recordMisses = false;
+    // Score what the pipelines reject (setExplainRejections) and list every prefilter refusal
+    // (setListEveryRefusal) without keeping each miss; recordMisses does both too. The --misses
+    // table then names what refused a ball that the listing's cap hid (as "no candidate").
+    // Verdicts are the same; times are not the robot's.
+    bool explainRejections = false;
 };
 
 struct QualityRun {
