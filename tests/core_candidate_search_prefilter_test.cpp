@@ -57,6 +57,14 @@ bool candidateAt(const Config& c, const cv::Mat& frame, cv::Point ball, int* pre
     return false;
 }
 
+// Whether the whole pipeline detects the ball at `ball`.
+bool pipelineFindsBall(const Config& c, const cv::Mat& frame, cv::Point ball)
+{
+    PipelineResult r;
+    Pipeline(c).process(frame, PixelFormat::Bgr8, r);
+    return r.detection.found && near(r.detection.px, r.detection.py, ball);
+}
+
 }  // namespace
 
 class CandidatePrefilterTest : public QObject {
@@ -75,10 +83,7 @@ private slots:
         QVERIFY(candidateAt(c, frame, ball, &dropped));
         QVERIFY(dropped >= 2);
         // And the pipeline finds it.
-        PipelineResult r;
-        Pipeline(c).process(frame, PixelFormat::Bgr8, r);
-        QVERIFY(r.detection.found);
-        QVERIFY(near(r.detection.px, r.detection.py, ball));
+        QVERIFY(pipelineFindsBall(c, frame, ball));
     }
 
     void blackMaximaGiveWay()
@@ -126,10 +131,7 @@ private slots:
         byClass.validation.blackByLocalCarpet = false;
         QVERIFY(!candidate(byClass, &colour));
         // And validation agrees: the pipeline finds it.
-        PipelineResult r;
-        Pipeline(c).process(frame, PixelFormat::Bgr8, r);
-        QVERIFY(r.detection.found);
-        QVERIFY(near(r.detection.px, r.detection.py, ball));
+        QVERIFY(pipelineFindsBall(c, frame, ball));
     }
 
     // A ball touching a robot's black body is one non-green region with it: too large for a
@@ -239,10 +241,7 @@ private slots:
         QVERIFY(candidateAt(c, frame, ball, &dropped));
         QVERIFY(dropped >= 2);
         // And the pipeline finds it.
-        PipelineResult r;
-        Pipeline(c).process(frame, PixelFormat::Bgr8, r);
-        QVERIFY(r.detection.found);
-        QVERIFY(near(r.detection.px, r.detection.py, ball));
+        QVERIFY(pipelineFindsBall(c, frame, ball));
     }
 
     // The robot lists only the strongest refusals per area; the miss diagnosis
