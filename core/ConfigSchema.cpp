@@ -696,6 +696,10 @@ std::vector<ConfigKey> buildSchema()
                           "of the candidate's centre (a far ball's centre found a px or two off crosses it off its widest "
                           "chord); rim_max_width reads the arc through the centre; 0: that arc alone",
                           [](auto& c) -> auto& { return c.validation.rimArcOffsetPx; }));
+    s.push_back(boolKey("validation.rim_arc_masked_mirrors", false,
+                        "rim_test: a way of the arc run that stops at a masked pixel (a support rod) counts as long as "
+                        "the other way: a far ball half behind a rod is not a narrow marker; off: the mask ends the run",
+                        [](auto& c) -> auto& { return c.validation.rimArcMaskedMirrors; }));
     s.push_back(boolKey("validation.rim_skip_inner_field", false,
                         "rim_test: an inward ray's carpet pixels more than rim_band_px inside the ball's border (a green panel, "
                         "noise in its shadow) are skipped, and the first one from there on must lie within the band; off: the "

@@ -53,21 +53,23 @@ RimClosure rimClosure(const cv::Mat& classes, const Geometry& geometry, const Co
 }
 
 double rimArcRunPx(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, double x, double y,
-                   double maxEachWayPx, double carpetPx)
+                   double maxEachWayPx, double carpetPx, bool maskedMirrors)
 {
     const double cx = geometry.options().centerX;
     const double cy = geometry.options().centerY;
     const double d = std::hypot(x - cx, y - cy);
     if (!(d > 1.0)) return 0.0;
     const double a0 = std::atan2(y - cy, x - cx);
+    auto pixelAlong = [&](double way, double s) {
+        const double a = a0 + way * s / d;
+        return cv::Point(int(std::lround(cx + d * std::cos(a))), int(std::lround(cy + d * std::sin(a))));
+    };
+    auto inImage = [&](cv::Point p) { return p.x >= 0 && p.y >= 0 && p.x < classes.cols && p.y < classes.rows; };
     // What the arc holds `s` px along it `way`: nothing (unprocessed or off the image), or the class.
     auto classAlong = [&](double way, double s) -> std::optional<std::uint8_t> {
-        const double a = a0 + way * s / d;
-        const int px = int(std::lround(cx + d * std::cos(a)));
-        const int py = int(std::lround(cy + d * std::sin(a)));
-        if (px < 0 || py < 0 || px >= classes.cols || py >= classes.rows || !geometry.isUsed(px, py))
-            return std::nullopt;
-        return classes.ptr<std::uint8_t>(py)[px];
+        const cv::Point p = pixelAlong(way, s);
+        if (!inImage(p) || !geometry.isUsed(p.x, p.y)) return std::nullopt;
+        return classes.ptr<std::uint8_t>(p.y)[p.x];
     };
     // Carpet that goes on: field here and at every px on out to carpetPx (unprocessed ends it too).
     auto carpetGoesOn = [&](double way, double s) {
@@ -78,23 +80,35 @@ double rimArcRunPx(const cv::Mat& classes, const Geometry& geometry, const Colou
         }
         return true;
     };
-    double run = 0.0;
-    for (const double way : {1.0, -1.0}) {
+    const cv::Mat& maskedInRing = geometry.maskedInRing();
+    double runs[2] = {0.0, 0.0};
+    bool atMask[2] = {false, false};
+    for (int k = 0; k < 2; ++k) {
+        const double way = k == 0 ? 1.0 : -1.0;
         double s = 0.5;
         for (; s <= maxEachWayPx + 1e-9; s += 0.5) {
             const std::optional<std::uint8_t> cls = classAlong(way, s);
-            if (!cls) break;
+            if (!cls) {
+                const cv::Point p = pixelAlong(way, s);
+                atMask[k] = !maskedInRing.empty() && inImage(p) && maskedInRing.ptr<std::uint8_t>(p.y)[p.x] != 0;
+                break;
+            }
             if (roles.field(*cls) && carpetGoesOn(way, s)) break;
         }
-        run += std::min(s, maxEachWayPx);
+        runs[k] = std::min(s, maxEachWayPx);
     }
-    return run;
+    if (maskedMirrors && atMask[0] != atMask[1]) {
+        const double open = atMask[0] ? runs[1] : runs[0];
+        runs[0] = std::max(runs[0], open);
+        runs[1] = std::max(runs[1], open);
+    }
+    return runs[0] + runs[1];
 }
 
 double rimWidestArcRunPx(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
-                         double maxEachWayPx, double carpetPx, double offsetPx)
+                         double maxEachWayPx, double carpetPx, double offsetPx, bool maskedMirrors)
 {
-    double widest = rimArcRunPx(classes, geometry, roles, x, y, maxEachWayPx, carpetPx);
+    double widest = rimArcRunPx(classes, geometry, roles, x, y, maxEachWayPx, carpetPx, maskedMirrors);
     const double dx = x - geometry.options().centerX;
     const double dy = y - geometry.options().centerY;
     const double d = std::hypot(dx, dy);
@@ -102,8 +116,8 @@ double rimWidestArcRunPx(const cv::Mat& classes, const Geometry& geometry, const
     for (double o = 1.0; o <= offsetPx + 1e-9; o += 1.0)
         for (const double way : {1.0, -1.0}) {
             const double k = way * o / d;
-            widest =
-                std::max(widest, rimArcRunPx(classes, geometry, roles, x + k * dx, y + k * dy, maxEachWayPx, carpetPx));
+            widest = std::max(widest, rimArcRunPx(classes, geometry, roles, x + k * dx, y + k * dy, maxEachWayPx,
+                                                  carpetPx, maskedMirrors));
         }
     return widest;
 }

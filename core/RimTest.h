@@ -37,16 +37,18 @@ RimClosure rimClosure(const cv::Mat& classes, const Geometry& geometry, const Co
 // line along the rim, or a robot's row of markers and its dark body, runs on. Each way stops at
 // the first unprocessed pixel, at the first field pixel after which the arc stays field for
 // carpetPx more (0: at the first field pixel; 1 lets a speck of carpet noise in a dim floor not
-// end the run), or after maxEachWayPx.
+// end the run), or after maxEachWayPx. `maskedMirrors`: a way that stops at a masked pixel inside
+// the ring (a support rod) runs at least as far as the other way, which did not: the ball's far
+// side behind the rod is unknown, not narrow.
 double rimArcRunPx(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, double x, double y,
-                   double maxEachWayPx, double carpetPx = 0.0);
+                   double maxEachWayPx, double carpetPx = 0.0, bool maskedMirrors = false);
 
 // The widest of those runs along the arcs through the points up to `offsetPx` (whole px steps)
 // radially in and out of (x, y): a candidate's centre lies a px or two off the ball's (a Hough
 // cell, a blurred border), and the arc through it then crosses the squashed ball off its widest
 // chord. 0: the arc through (x, y) alone.
 double rimWidestArcRunPx(const cv::Mat& classes, const Geometry& geometry, const ColourRoles& roles, int x, int y,
-                         double maxEachWayPx, double carpetPx, double offsetPx);
+                         double maxEachWayPx, double carpetPx, double offsetPx, bool maskedMirrors = false);
 
 // The ball's width (px) along its arc: the tangential axis of the ellipse of the circle's area
 // squashed radially by `squash` (1: the circle's diameter).

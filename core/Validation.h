@@ -280,6 +280,11 @@ struct ValidationOptions {
     // a far ball's centre found 1-2 px off its own crosses the squashed ball off its widest chord,
     // and blur takes the rest. 0: the arc through the centre alone.
     double rimArcOffsetPx = 1.0;
+    // A way of the arc run that stops at a masked pixel (a support rod) counts as long as the
+    // other way: a far ball at the rim half behind a rod is not a narrow marker. Optics matrix
+    // seeds 1-6, combined: 4099 -> 4103 balls, false-positive frames 30 either way. Off: the
+    // masked way ends the run.
+    bool rimArcMaskedMirrors = true;
     // The inward closure skips field pixels more than rimBandPx inside the border (a green panel
     // of the ball, its shadow's noise): the first field pixel from there on decides. Off: the
     // first field pixel on the ray. Optics matrix seeds 1-4 with both: combined 2595 -> 2627

@@ -159,6 +159,29 @@ private slots:
         QCOMPARE(rimArcRunPx(classes, geometry, roles, 100, 185, 40.0, 1.0), atSpeck);
     }
 
+    // validation.rim_arc_masked_mirrors: a ball half behind a rod is as wide as its open side
+    // says; the rim past the ring (not a mask) still ends a way as before.
+    void arcRunMirrorsAWayEndingAtAMask()
+    {
+        cv::Mat mask(200, 200, CV_8UC1, cv::Scalar(255));
+        cv::rectangle(mask, cv::Rect(103, 150, 4, 50), cv::Scalar(0), cv::FILLED);  // a rod across the arc
+        const Geometry geometry(testGeometry(), mask);
+        QVERIFY(geometry.maskedInRing().at<std::uint8_t>(185, 104) != 0);
+        const ColourRoles roles = defaultColourRoles();
+        cv::Mat classes(200, 200, CV_8UC1, cv::Scalar(int(ColorClass::Green)));
+        // The 9 px orange blob of arcRunAndClosure, its +x side from x = 103 on behind the rod.
+        cv::rectangle(classes, cv::Rect(96, 183, 9, 5), cv::Scalar(int(ColorClass::Orange)), cv::FILLED);
+        const double cut = rimArcRunPx(classes, geometry, roles, 100, 185, 30.0, 0.0, false);
+        const double mirrored = rimArcRunPx(classes, geometry, roles, 100, 185, 30.0, 0.0, true);
+        QVERIFY2(std::abs(cut - 7.0) <= 1.0, qPrintable(QString::number(cut)));
+        QVERIFY2(std::abs(mirrored - 9.0) <= 1.0, qPrintable(QString::number(mirrored)));
+        QCOMPARE(rimWidestArcRunPx(classes, geometry, roles, 100, 185, 30.0, 0.0, 0.0, true), mirrored);
+        // Without a mask both settings read the same arc.
+        const Geometry open(testGeometry(), cv::Mat());
+        QCOMPARE(rimArcRunPx(classes, open, roles, 100, 185, 30.0, 0.0, true),
+                 rimArcRunPx(classes, open, roles, 100, 185, 30.0, 0.0, false));
+    }
+
     // validation.rim_arc_offset_px: a centre found off the ball's widest chord still finds it.
     void widestArcRunReachesTheWidestChord()
     {
