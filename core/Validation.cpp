@@ -681,7 +681,8 @@ bool rimCutBallPasses(const cv::Mat& classes, const Geometry& geometry, const Co
     const double squash = options.radialSquash ? ballSquash : 1.0;
     const double width = rimExpectedWidthPx(expectedRadiusPx, squash);
     const double reach = options.rimMaxWidth * width;
-    const double run = rimArcRunPx(classes, geometry, roles, x, y, reach, options.rimArcCarpetPx, options.rimArcMaskedMirrors);
+    const double run =
+        rimArcRunPx(classes, geometry, roles, x, y, reach, options.rimArcCarpetPx, options.rimArcMaskedMirrors);
     // The arcs beside the centre's are read only when it falls short of a ball's width.
     const double minRun = options.rimMinWidth * width;
     const bool wideEnough =

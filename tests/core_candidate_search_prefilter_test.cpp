@@ -282,7 +282,8 @@ private slots:
         QCOMPARE(full.hough.prefilterListed, fast.hough.prefilterListed);
         QCOMPARE(full.hough.prefilterUnlisted, int(decoys.size()) - listedByRobot);
         // The unlisted come last.
-        for (std::size_t i = full.candidates.size() - std::size_t(full.hough.prefilterUnlisted); i < full.candidates.size(); ++i)
+        const std::size_t unlistedFrom = full.candidates.size() - std::size_t(full.hough.prefilterUnlisted);
+        for (std::size_t i = unlistedFrom; i < full.candidates.size(); ++i)
             QCOMPARE(full.candidates[i].rejected, RejectReason::NonBlack);
     }
 

@@ -133,8 +133,9 @@ public:
             try {
                 if (!slot) {
                     slot = std::make_unique<Pipeline>(config);
-                    slot->setExplainRejections(options_.recordMisses || options_.explainRejections);
-                    slot->setListEveryRefusal(options_.recordMisses || options_.explainRejections);
+                    const bool explain = options_.recordMisses || options_.explainRejections;
+                    slot->setExplainRejections(explain);
+                    slot->setListEveryRefusal(explain);
                 }
             } catch (const std::exception& e) {
                 throw std::invalid_argument(cr.name + " (" + variant.name + "): the fitted config is refused: " + e.what());
