@@ -498,6 +498,12 @@ std::vector<ConfigKey> buildSchema()
                           "Circularity is judged only when this share of the circle's rays crosses processed pixels (the rest lie on "
                           "the robot body or rods); below it the candidate fails; lower: judges a mostly hidden circle by a few rays",
                           [](auto& c) -> auto& { return c.validation.minUsableRayShare; }));
+    s.push_back(doubleKey("validation.min_unoccluded_ray_share", "fraction", 0, 1, false,
+                          "Of the usable rays and those whose border leads into a robot's black or marker band, at least this "
+                          "share must be usable (masked rays and rays into a line do not count); below it the candidate fails "
+                          "circularity (a circle inside a robot at its marker band); higher: refuses balls further behind a "
+                          "robot. 0: off",
+                          [](auto& c) -> auto& { return c.validation.minUnoccludedRayShare; }));
     s.push_back(doubleKey("validation.beyond_edge_px", "px", 0.5, 10, false,
                           "How far beyond a ray's edge its colour is read (border_into_carpet, ignore_occluded_rays); smaller: reads "
                           "the blurred border itself, larger: reaches a neighbouring line or robot",

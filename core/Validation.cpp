@@ -166,6 +166,7 @@ struct BorderRay {
     bool judged = false;     // it says something of the shape (else it is left out)
     bool hit = false;        // the ball's border lies in the search band
     bool occluded = false;   // the border leads into a robot: the ray is not judged
+    bool intoRobot = false;  // occluded by a robot's own colours (black, a marker), not a line or a foot
     double hitRadius = 0.0;  // px from the centre, when hit
     cv::Point2d hitAt;       // the border point relative to the centre, when hit
 };
@@ -267,7 +268,7 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
         const bool beyondKnown = c.known(b);
         const std::uint8_t beyond = beyondKnown ? c.classAt(b) : std::uint8_t(ColorClass::Unknown);
         if (options.ignoreOccludedRays && c.robotAt(beyond)) {
-            ray.occluded = true;
+            ray.occluded = ray.intoRobot = true;
             return ray;
         }
         const bool intoCarpet = !beyondKnown || c.carpetAt(b) || (c.roles.field(beyond) && c.carpetFollows(r, ca, sa));
@@ -291,7 +292,7 @@ BorderRay traceBorder(const Circle& c, double ca, double sa, double rMin, double
     if (!ray.hit && !blocked && options.ignoreOccludedRays) {
         // No border at all: the ball may run on into a robot standing against it.
         const cv::Point e = c.along(rMax, ca, sa);
-        ray.occluded = c.known(e) && c.robotAt(c.classAt(e));
+        ray.occluded = ray.intoRobot = c.known(e) && c.robotAt(c.classAt(e));
     }
     // A ray that found no border after passing unknown pixels may have lost it behind the mask.
     ray.judged = anyUsed && (ray.hit || blocked || !(sawUnknown && options.maskedRaysUnknown));
@@ -373,6 +374,7 @@ void scoreCircularity(const Circle& c, ValidationScores& s)
     const double rMax = options.circleFit ? c.radius + fitAllowance(c.radius, options) + band : c.radius + band;
     const int rays = rayCount(c.radius);
     int usable = 0;
+    int robotRays = 0;
     int hits = 0;
     double hitSum = 0;
     double hitSq = 0;
@@ -389,6 +391,7 @@ void scoreCircularity(const Circle& c, ValidationScores& s)
         // The band follows the ellipse; hits go back onto the circle of the same area.
         const double scale = c.reachAlong(ca, sa);
         const BorderRay ray = traceBorder(c, ca, sa, std::max(0.5, rMin * scale), rMax * scale);
+        if (ray.intoRobot) ++robotRays;
         if (ray.occluded || !ray.judged) continue;
         ++usable;
         if (options.fitVisibleBorder) {
@@ -405,6 +408,8 @@ void scoreCircularity(const Circle& c, ValidationScores& s)
     }
     if (hits > 0) s.borderSpreadPx = std::sqrt(std::max(0.0, hitSq / hits - (hitSum / hits) * (hitSum / hits)));
     if (usable == 0 || usable < options.minUsableRayShare * rays) return;
+    // Masked rays (rods, our body) are not in this share, nor rays into a line or a foot.
+    if (usable < options.minUnoccludedRayShare * (usable + robotRays)) return;
     if (!options.circleFit) {
         s.circularityPct = 100.0 * hits / usable;
         return;

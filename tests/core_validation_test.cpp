@@ -285,6 +285,36 @@ private slots:
         QCOMPARE(score(allRays).circularityPct, 0.0);
     }
 
+    // A circle whose border leads into a robot's black most of the way round (inside a robot's
+    // body, at its marker band) is not judged on the few rays left; a ball half in front of a
+    // robot is (validation.min_unoccluded_ray_share). Off, both are judged on their carpet side.
+    void minUnoccludedRayShareIsTheConfigs_data()
+    {
+        QTest::addColumn<double>("carpetDegrees");
+        QTest::addColumn<bool>("judged");
+        QTest::newRow("carpet on 105 degrees") << 105.0 << false;
+        QTest::newRow("carpet on 180 degrees") << 180.0 << true;
+    }
+    void minUnoccludedRayShareIsTheConfigs()
+    {
+        QFETCH(double, carpetDegrees);
+        QFETCH(bool, judged);
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point2d q = pointAt(c, 150, 30);
+        const cv::Point p(int(std::lround(q.x)), int(std::lround(q.y)));
+        const int r = int(std::lround(expectedRadius(c, 150)));
+        cv::circle(frame, p, 4 * r, kBlack, cv::FILLED);
+        cv::ellipse(frame, p, cv::Size(4 * r, 4 * r), 0, 0, carpetDegrees, kGreen, cv::FILLED);
+        QCOMPARE(drawBall(frame, c, 150, 30), p);
+        const EdgeStages s(c, frame);
+        auto score = [&](const ValidationOptions& o) { return scoresAt(s, p, o).circularityPct; };
+        QVERIFY2((score(c.validation) > 50) == judged, qPrintable(QString::number(score(c.validation))));
+        ValidationOptions off = c.validation;
+        off.minUnoccludedRayShare = 0.0;
+        QVERIFY2(score(off) > 50, qPrintable(QString::number(score(off))));
+    }
+
     void beyondEdgePxIsTheConfigs()
     {
         // A ball inside a white ring with a thin strip of carpet between them: just beyond its
