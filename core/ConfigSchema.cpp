@@ -644,6 +644,11 @@ std::vector<ConfigKey> buildSchema()
                           "recentre_refused: only refusals whose expected radius is at least this: farther out a line's bend "
                           "or its end at a rod, centred by the move, looks like a small ball",
                           [](auto& c) -> auto& { return c.validation.recentreMinRadiusPx; }));
+    s.push_back(intKey("validation.refit_recentre", "candidates", 0, 100, false,
+                       "circle_fit: candidates refused on circularity whose border fits a circle (a Hough maximum a few pixels "
+                       "off the ball's centre) are moved to the fitted centre and validated there, at most this many per "
+                       "frame; 0: they stay refused",
+                       [](auto& c) -> auto& { return c.validation.refitRecentre; }));
 
     // validation at the mirror rim (issue 9: where the optics matrix's false positives sat)
     s.push_back(boolKey("validation.refuse_at_rim", false,

@@ -263,6 +263,15 @@ struct ValidationOptions {
     // px; nor for smaller expected radii: in the far ring, a line's bend or its end at a rod,
     // centred by the move, passes every test (optics matrix seed 2: two false-positive frames).
     double recentreMinRadiusPx = 8.0;
+    // With circleFit, candidates refused on circularity whose border fits a circle are moved to
+    // the fitted centre and validated there (core/FitRecentre.h), up to refitRecentre per frame
+    // in list order; 0: they stay refused. A Hough maximum a few pixels off the ball's centre (a
+    // rod or the panels pull the votes) was refused as "circle off model" though its fit was the
+    // ball. Optics matrix, combined, balls / false-positive frames: seeds 1-4 2747 / 15 ->
+    // 2771 / 16, seeds 5-6 1355 / 7 -> 1369 / 9, seeds 7-8 1364 / 9 -> 1380 / 11; 8 per frame
+    // finds the same. Only the "circle off model" refusals (circularity passed): 2753 / 15,
+    // 1359 / 8.
+    int refitRecentre = 4;
 
     // With refuseAtRim, a candidate whose expected circle reaches up to rimMaxOverhangPx past
     // outer_radius - rimMarginPx is judged instead of refused when its inward side is closed

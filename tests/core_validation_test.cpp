@@ -2,6 +2,7 @@
 // rejecting the look-alike it exists for.
 #include "DrawnCandidate.h"
 #include "core/ConfigSchema.h"
+#include "core/FitRecentre.h"
 #include "core/FrameColour.h"
 #include "core/GreenPanelTest.h"
 #include "core/Validation.h"
@@ -313,6 +314,33 @@ private slots:
         ValidationOptions off = c.validation;
         off.minUnoccludedRayShare = 0.0;
         QVERIFY2(score(off) > 50, qPrintable(QString::number(score(off))));
+    }
+
+    // A maximum a few pixels off a ball's centre is refused as a circle off the model, though the
+    // circle fitted to its border is the ball's; moved to the fitted centre it passes
+    // (validation.refit_recentre). With 0 it stays refused.
+    void offCentreMaximumMovesToItsFit()
+    {
+        const Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 150, 30);
+        const EdgeStages s(c, frame);
+        BallCandidate off = candidateAt(s, p + cv::Point(3, 2));
+        validateCandidate(off, s.classes, s.edges, s.geometry, s.ball, c.validation);
+        QVERIFY2(off.rejected == RejectReason::Circularity && off.scores.fitRadiusPx > 0, qPrintable(verdict(off)));
+        auto recentre = [&](std::vector<BallCandidate>& list, const ValidationOptions& o) {
+            return recentreOnFits(list, list.size(), s.classes, s.edges, s.geometry, s.ball, o, nullptr,
+                                  defaultColourRoles(), false);
+        };
+        std::vector<BallCandidate> list{off};
+        ValidationOptions never = c.validation;
+        never.refitRecentre = 0;
+        QCOMPARE(recentre(list, never), 0);
+        QCOMPARE(list[0].x, off.x);
+        QCOMPARE(recentre(list, c.validation), 1);
+        QVERIFY2(list[0].rejected == RejectReason::None, qPrintable(verdict(list[0])));
+        QVERIFY2(std::hypot(list[0].x - p.x, list[0].y - p.y) <= 1.5,
+                 qPrintable(QString("moved to (%1, %2), ball at (%3, %4)").arg(list[0].x).arg(list[0].y).arg(p.x).arg(p.y)));
     }
 
     void beyondEdgePxIsTheConfigs()
