@@ -27,4 +27,15 @@ double expectedRadiusAt(const Geometry& geometry, const BallModel& ball, int x, 
     return hasDirectionTerm(ball) ? ball.radiusAt(d, imageAngleAt(geometry, x, y)) : ball.radiusAt(d);
 }
 
+BallCandidate movedCandidate(const BallCandidate& c, int x, int y, const Geometry& geometry, const BallModel& ball)
+{
+    BallCandidate moved = c;
+    moved.x = x;
+    moved.y = y;
+    moved.distancePx = geometry.distanceAt(x, y);
+    moved.expectedRadiusPx = expectedRadiusAt(geometry, ball, x, y);
+    moved.rejected = RejectReason::None;
+    return moved;
+}
+
 }  // namespace omnitune

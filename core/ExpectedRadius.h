@@ -6,6 +6,8 @@
 // direction through imageAngleAt at the candidate's own distance (an OpenCV circle may lie off
 // the image), and the specific Hough's voting loci have direction sectors of their own.
 
+#include "core/BallCandidate.h"
+
 namespace omnitune {
 
 class BallModel;
@@ -16,5 +18,8 @@ double imageAngleAt(const Geometry& geometry, double x, double y);
 // Expected radius (px) of a ball centred at (x, y); exactly ball.radiusAt(distance) without
 // a direction term (no angle is computed then).
 double expectedRadiusAt(const Geometry& geometry, const BallModel& ball, int x, int y);
+// `c` moved to (x, y) for a second look: its distance and expected radius there, not yet judged
+// (rejected None). The rest, radiusPx included, stays the candidate's.
+BallCandidate movedCandidate(const BallCandidate& c, int x, int y, const Geometry& geometry, const BallModel& ball);
 
 }  // namespace omnitune

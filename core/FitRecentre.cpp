@@ -13,7 +13,6 @@ int recentreOnFits(std::vector<BallCandidate>& candidates, std::size_t end, cons
                    const FrameColour* colour, const ColourRoles& roles, bool stopAtColour)
 {
     if (!options.circleFit || options.refitRecentre <= 0) return 0;
-    const cv::Mat& used = geometry.usedMask();
     int tried = 0;
     int kept = 0;
     for (std::size_t i = 0; i < end && i < candidates.size() && tried < options.refitRecentre; ++i) {
@@ -22,17 +21,11 @@ int recentreOnFits(std::vector<BallCandidate>& candidates, std::size_t end, cons
         if (c.rejected != RejectReason::Circularity || !c.scores.shapeMeasured || c.scores.fitRadiusPx <= 0.0) continue;
         const int x = c.x + int(std::lround(c.scores.fitDx));
         const int y = c.y + int(std::lround(c.scores.fitDy));
-        if ((x == c.x && y == c.y) || x < 0 || y < 0 || x >= used.cols || y >= used.rows || used.at<std::uint8_t>(y, x) == 0)
+        if ((x == c.x && y == c.y) || x < 0 || y < 0 || x >= classes.cols || y >= classes.rows || !geometry.isUsed(x, y))
             continue;
         ++tried;
-        BallCandidate moved = c;
-        moved.x = x;
-        moved.y = y;
-        moved.distancePx = geometry.distanceAt(x, y);
-        moved.expectedRadiusPx = expectedRadiusAt(geometry, ball, x, y);
-        moved.radiusPx = moved.expectedRadiusPx;
-        moved.rejected = RejectReason::None;
-        moved.scores = ValidationScores{};
+        BallCandidate moved = movedCandidate(c, x, y, geometry, ball);
+        moved.radiusPx = moved.expectedRadiusPx;  // a specific Hough candidate's circle is the expected one
         validateCandidate(moved, classes, edges, geometry, ball, options, colour, roles, stopAtColour);
         if (moved.rejected != RejectReason::None) continue;
         candidates[i] = moved;

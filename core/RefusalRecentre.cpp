@@ -64,12 +64,7 @@ RecentreCounts recentreRefusals(std::vector<BallCandidate>& candidates, std::siz
         }
         const cv::Point q(int(std::lround(p.x)), int(std::lround(p.y)));
         if (!processed(q)) continue;
-        BallCandidate moved = refused;
-        moved.x = q.x;
-        moved.y = q.y;
-        moved.distancePx = geometry.distanceAt(q.x, q.y);
-        moved.expectedRadiusPx = expectedRadiusAt(geometry, ball, q.x, q.y);
-        moved.rejected = RejectReason::None;
+        BallCandidate moved = movedCandidate(refused, q.x, q.y, geometry, ball);
         // Most moves fail on colour again (dim speckle, a line): their shape is not measured.
         validateCandidate(moved, classes, edges, geometry, ball, options, &colour, roles, true);
         if (moved.rejected != RejectReason::None) continue;
