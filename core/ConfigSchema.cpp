@@ -649,6 +649,10 @@ std::vector<ConfigKey> buildSchema()
                        "off the ball's centre) are moved to the fitted centre and validated there, at most this many per "
                        "frame; 0: they stay refused",
                        [](auto& c) -> auto& { return c.validation.refitRecentre; }));
+    s.push_back(doubleKey("validation.refit_min_radius_px", "px", 0, 100, false,
+                          "refit_recentre: only moves whose expected radius at the fitted centre is at least this: far out, a "
+                          "robot's marker patch or a pale blob in dim light fits a circle of its own",
+                          [](auto& c) -> auto& { return c.validation.refitMinRadiusPx; }));
 
     // validation at the mirror rim (issue 9: where the optics matrix's false positives sat)
     s.push_back(boolKey("validation.refuse_at_rim", false,

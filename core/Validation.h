@@ -272,6 +272,11 @@ struct ValidationOptions {
     // finds the same. Only the "circle off model" refusals (circularity passed): 2753 / 15,
     // 1359 / 8.
     int refitRecentre = 4;
+    // px; nor when the expected radius at the fitted centre is smaller: far out in dim light, a
+    // robot's marker patch or a pale blob between lines (expected 5.4-6.1 px) fitted a circle and
+    // passed there. Combined: seeds 1-4 2771 / 16 -> 2764 / 16, seeds 5-6 1369 / 9 -> 1369 / 8,
+    // seeds 7-8 1380 / 11 -> 1377 / 9; 8 px 2756 / 16, 1365 / 8.
+    double refitMinRadiusPx = 6.5;
 
     // With refuseAtRim, a candidate whose expected circle reaches up to rimMaxOverhangPx past
     // outer_radius - rimMarginPx is judged instead of refused when its inward side is closed

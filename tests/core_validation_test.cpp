@@ -337,6 +337,11 @@ private slots:
         never.refitRecentre = 0;
         QCOMPARE(recentre(list, never), 0);
         QCOMPARE(list[0].x, off.x);
+        ValidationOptions tooFar = c.validation;  // the ball's expected radius is under the minimum
+        tooFar.refitMinRadiusPx = expectedRadius(c, 150) + 1.0;
+        QCOMPARE(recentre(list, tooFar), 0);
+        QCOMPARE(list[0].x, off.x);
+        QVERIFY(expectedRadius(c, 150) - 1.0 >= c.validation.refitMinRadiusPx);
         QCOMPARE(recentre(list, c.validation), 1);
         QVERIFY2(list[0].rejected == RejectReason::None, qPrintable(verdict(list[0])));
         QVERIFY2(std::hypot(list[0].x - p.x, list[0].y - p.y) <= 1.5,
