@@ -11,6 +11,11 @@ enum class CandidateSource { SpecificHough, OpenCvHough, BlobSeed };
 
 std::string_view candidateSourceName(CandidateSource s);
 
+// Whether a second look moved the candidate from where its search put it, and how: to the
+// centroid of what is not carpet around a prefilter refusal (validation.recentre_refused), or to
+// the centre of the circle fitted to a circularity refusal's border (validation.refit_recentre).
+enum class CandidateMove : unsigned char { None, ToColourCentroid, ToCircleFit };
+
 enum class RejectReason {
     None,             // accepted
     OutsideArea,      // centre not on a processed pixel, or the circle reaches the rim (validation.refuse_at_rim)
@@ -65,6 +70,9 @@ struct BallCandidate {
                               // the valid candidate with the highest is chosen
     ValidationScores scores;
     RejectReason rejected = RejectReason::None;
+    CandidateMove move = CandidateMove::None;
+    int searchX = 0;  // with a move: where the search put the centre, px
+    int searchY = 0;
 };
 
 }  // namespace omnitune

@@ -27,9 +27,13 @@ double expectedRadiusAt(const Geometry& geometry, const BallModel& ball, int x, 
     return hasDirectionTerm(ball) ? ball.radiusAt(d, imageAngleAt(geometry, x, y)) : ball.radiusAt(d);
 }
 
-BallCandidate movedCandidate(const BallCandidate& c, int x, int y, const Geometry& geometry, const BallModel& ball)
+BallCandidate movedCandidate(const BallCandidate& c, int x, int y, CandidateMove how, const Geometry& geometry,
+                             const BallModel& ball)
 {
     BallCandidate moved = c;
+    moved.move = how;
+    moved.searchX = c.x;
+    moved.searchY = c.y;
     moved.x = x;
     moved.y = y;
     moved.distancePx = geometry.distanceAt(x, y);

@@ -18,8 +18,10 @@ double imageAngleAt(const Geometry& geometry, double x, double y);
 // Expected radius (px) of a ball centred at (x, y); exactly ball.radiusAt(distance) without
 // a direction term (no angle is computed then).
 double expectedRadiusAt(const Geometry& geometry, const BallModel& ball, int x, int y);
-// `c` moved to (x, y) for a second look: its distance and expected radius there, not yet judged
-// (rejected None). The rest, radiusPx included, stays the candidate's.
-BallCandidate movedCandidate(const BallCandidate& c, int x, int y, const Geometry& geometry, const BallModel& ball);
+// `c` moved to (x, y) for a second look (`how`, and where the search had put it): its distance and
+// expected radius there, not yet judged (rejected None). The rest, radiusPx included, stays the
+// candidate's.
+BallCandidate movedCandidate(const BallCandidate& c, int x, int y, CandidateMove how, const Geometry& geometry,
+                             const BallModel& ball);
 
 }  // namespace omnitune

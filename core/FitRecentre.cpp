@@ -23,7 +23,7 @@ int recentreOnFits(std::vector<BallCandidate>& candidates, std::size_t end, cons
         const int y = c.y + int(std::lround(c.scores.fitDy));
         if ((x == c.x && y == c.y) || x < 0 || y < 0 || x >= classes.cols || y >= classes.rows || !geometry.isUsed(x, y))
             continue;
-        BallCandidate moved = movedCandidate(c, x, y, geometry, ball);
+        BallCandidate moved = movedCandidate(c, x, y, CandidateMove::ToCircleFit, geometry, ball);
         if (moved.expectedRadiusPx < options.refitMinRadiusPx) continue;
         ++tried;
         moved.radiusPx = moved.expectedRadiusPx;  // a specific Hough candidate's circle is the expected one

@@ -64,7 +64,7 @@ RecentreCounts recentreRefusals(std::vector<BallCandidate>& candidates, std::siz
         }
         const cv::Point q(int(std::lround(p.x)), int(std::lround(p.y)));
         if (!processed(q)) continue;
-        BallCandidate moved = movedCandidate(refused, q.x, q.y, geometry, ball);
+        BallCandidate moved = movedCandidate(refused, q.x, q.y, CandidateMove::ToColourCentroid, geometry, ball);
         // Most moves fail on colour again (dim speckle, a line): their shape is not measured.
         validateCandidate(moved, classes, edges, geometry, ball, options, &colour, roles, true);
         if (moved.rejected != RejectReason::None) continue;

@@ -344,6 +344,9 @@ private slots:
         QVERIFY(expectedRadius(c, 150) - 1.0 >= c.validation.refitMinRadiusPx);
         QCOMPARE(recentre(list, c.validation), 1);
         QVERIFY2(list[0].rejected == RejectReason::None, qPrintable(verdict(list[0])));
+        QVERIFY(list[0].move == CandidateMove::ToCircleFit);  // the window's table says where it came from
+        QCOMPARE(list[0].searchX, off.x);
+        QCOMPARE(list[0].searchY, off.y);
         QVERIFY2(std::hypot(list[0].x - p.x, list[0].y - p.y) <= 1.5,
                  qPrintable(QString("moved to (%1, %2), ball at (%3, %4)").arg(list[0].x).arg(list[0].y).arg(p.x).arg(p.y)));
     }

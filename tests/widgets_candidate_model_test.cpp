@@ -107,6 +107,7 @@ private slots:
     void candidateAccessor();
     void prefilterRefusalsShowNoShape();
     void recentredRefusalsShowTheirShape();
+    void refittedCandidatesSayTheyMoved();
     void unmeasuredScoresShowADash();
 };
 
@@ -311,6 +312,9 @@ void CandidateModelTest::recentredRefusalsShowTheirShape()
     r.candidates[0].rejected = RejectReason::NotChosen;
     BallCandidate moved = makeCandidate(CandidateSource::SpecificHough, 4, 240, 130, RejectReason::None);
     moved.scores = measured(81.5, 100.0, 88.34, 0.0);
+    moved.move = CandidateMove::ToColourCentroid;
+    moved.searchX = 236;
+    moved.searchY = 127;
     BallCandidate refused = makeCandidate(CandidateSource::SpecificHough, 5, 200, 100, RejectReason::NonGreen);
     refused.scores = colourOnly(40.0, 100.0);
     r.candidates.insert(r.candidates.begin() + 1, {moved, refused});  // before OpenCV's circle
@@ -327,10 +331,35 @@ void CandidateModelTest::recentredRefusalsShowTheirShape()
     QVERIFY(!model.isRecentred(3));
     QCOMPARE(model.acceptedRow(), 1);
     QCOMPARE(model.index(1, Col::CircularityColumn).data().toString(), QString("88.3"));
-    QVERIFY(model.index(1, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Recentred"));
+    QVERIFY(model.index(1, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Recentred from (236, 127)"));
+    QCOMPARE(model.index(1, Col::ResultColumn).data().toString(), QString("accepted, moved"));
     QVERIFY(!model.index(1, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Not validated"));
     QCOMPARE(model.index(2, Col::CircularityColumn).data().toString(), QString("-"));
     QVERIFY(!model.index(2, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Recentred"));
+}
+
+// validation.refit_recentre replaces a circularity refusal in place by the candidate at its fitted
+// centre: nothing in the row's position says so, so the verdict and the tooltips do, with where
+// the search had put it; an unmoved row says nothing of a move.
+void CandidateModelTest::refittedCandidatesSayTheyMoved()
+{
+    PipelineResult r = twoCandidates();
+    r.candidates[0].move = CandidateMove::ToCircleFit;
+    r.candidates[0].searchX = r.candidates[0].x - 4;
+    r.candidates[0].searchY = r.candidates[0].y + 3;
+    r.hough.refitted = 1;
+    CandidateTableModel model;
+    model.setResult(r, Config{});
+    const QString from = QString("(%1, %2)").arg(r.candidates[0].searchX).arg(r.candidates[0].searchY);
+    QVERIFY(model.index(0, Col::ResultColumn).data().toString().endsWith(", moved"));
+    for (int column : {int(Col::ResultColumn), int(Col::XColumn), int(Col::YColumn)}) {
+        const QString tip = model.index(0, column).data(Qt::ToolTipRole).toString();
+        QVERIFY2(tip.contains("Moved to its fit from " + from) && tip.contains("refit_recentre"), qPrintable(tip));
+    }
+    QVERIFY(!model.index(0, Col::NonGreenColumn).data(Qt::ToolTipRole).toString().contains("Moved"));
+    QVERIFY(!model.index(1, Col::ResultColumn).data().toString().contains("moved"));
+    QVERIFY(!model.index(1, Col::ResultColumn).data(Qt::ToolTipRole).toString().contains("Moved"));
+    QVERIFY(!model.isRecentred(0));  // not a prefilter refusal: its row stays where the search listed it
 }
 
 // A pipeline that does not explain its rejections stops at a failed colour test: that row's shape

@@ -175,7 +175,12 @@ QVariant CandidateTableModel::display(const BallCandidate& c, int column) const
     case NonBlackColumn: return number(c.scores.nonBlackPct, 1);
     case CircularityColumn: return number(c.scores.circularityPct, 1);
     case RunOnColumn: return number(c.scores.runOnPct, 1);
-    case ResultColumn: return QString::fromUtf8(rejectReasonName(c.rejected).data(), int(rejectReasonName(c.rejected).size()));
+    case ResultColumn: {
+        // A moved row is not where its search put it: said in the verdict, the column always shown
+        // (the tooltip says from where and why).
+        const QString verdict = QString::fromUtf8(rejectReasonName(c.rejected).data(), int(rejectReasonName(c.rejected).size()));
+        return c.move == CandidateMove::None ? verdict : tr("%1, moved").arg(verdict);
+    }
     }
     return {};
 }
@@ -282,10 +287,19 @@ QString CandidateTableModel::cellToolTip(const BallCandidate& c, int column, Row
     if (kind == RowKind::Prefiltered && shapeColumn)
         tip += tr("\nNot validated: the candidate prefilter (hough.prefilter_*) refused it on its square's colour or "
                   "at the mirror rim, so its shape was never measured.");
-    if (kind == RowKind::Recentred && (column == SourceColumn || column == ResultColumn))
-        tip += tr("\nRecentred: the prefilter refused the Hough maximum on its square's colour (a green-and-white "
-                  "ball's maximum lies on its white half); moved to the centroid of what is not carpet and validated "
-                  "there (validation.recentre_refused).");
+    const bool moveColumn = column == SourceColumn || column == XColumn || column == YColumn || column == ResultColumn;
+    if (c.move == CandidateMove::ToColourCentroid && moveColumn)
+        tip += tr("\nRecentred from (%1, %2): the prefilter refused the Hough maximum there on its square's colour (a "
+                  "green-and-white ball's maximum lies on its white half); moved to the centroid of what is not carpet "
+                  "and validated here (validation.recentre_refused).")
+                   .arg(c.searchX)
+                   .arg(c.searchY);
+    if (c.move == CandidateMove::ToCircleFit && moveColumn)
+        tip += tr("\nMoved to its fit from (%1, %2): the Hough maximum there failed circularity, but its border fits a "
+                  "circle centred here (a rod or the ball's panels pulled the votes off centre); validated again here "
+                  "(validation.refit_recentre).")
+                   .arg(c.searchX)
+                   .arg(c.searchY);
     if (column == RadiusColumn && c.expectedRadiusPx > 0.0)
         tip += tr("\nExpected radius here: %1 px.").arg(number(c.expectedRadiusPx, 1));
     if (!isRejected(c.rejected) || column != failingColumn(c.rejected)) return tip;
