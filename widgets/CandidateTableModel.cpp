@@ -288,18 +288,17 @@ QString CandidateTableModel::cellToolTip(const BallCandidate& c, int column, Row
         tip += tr("\nNot validated: the candidate prefilter (hough.prefilter_*) refused it on its square's colour or "
                   "at the mirror rim, so its shape was never measured.");
     const bool moveColumn = column == SourceColumn || column == XColumn || column == YColumn || column == ResultColumn;
-    if (c.move == CandidateMove::ToColourCentroid && moveColumn)
-        tip += tr("\nRecentred from (%1, %2): the prefilter refused the Hough maximum there on its square's colour (a "
-                  "green-and-white ball's maximum lies on its white half); moved to the centroid of what is not carpet "
-                  "and validated here (validation.recentre_refused).")
-                   .arg(c.searchX)
-                   .arg(c.searchY);
-    if (c.move == CandidateMove::ToCircleFit && moveColumn)
-        tip += tr("\nMoved to its fit from (%1, %2): the Hough maximum there failed circularity, but its border fits a "
-                  "circle centred here (a rod or the ball's panels pulled the votes off centre); validated again here "
-                  "(validation.refit_recentre).")
-                   .arg(c.searchX)
-                   .arg(c.searchY);
+    if (c.move != CandidateMove::None && moveColumn) {
+        const QString how =
+            c.move == CandidateMove::ToColourCentroid
+                ? tr("Recentred from (%1, %2): the prefilter refused the Hough maximum there on its square's colour (a "
+                     "green-and-white ball's maximum lies on its white half); moved to the centroid of what is not "
+                     "carpet and validated here (validation.recentre_refused).")
+                : tr("Moved to its fit from (%1, %2): the Hough maximum there failed circularity, but its border fits "
+                     "a circle centred here (a rod or the ball's panels pulled the votes off centre); validated again "
+                     "here (validation.refit_recentre).");
+        tip += QLatin1Char('\n') + how.arg(c.searchX).arg(c.searchY);
+    }
     if (column == RadiusColumn && c.expectedRadiusPx > 0.0)
         tip += tr("\nExpected radius here: %1 px.").arg(number(c.expectedRadiusPx, 1));
     if (!isRejected(c.rejected) || column != failingColumn(c.rejected)) return tip;
