@@ -38,6 +38,8 @@ BallCandidate movedCandidate(const BallCandidate& c, int x, int y, CandidateMove
     moved.y = y;
     moved.distancePx = geometry.distanceAt(x, y);
     moved.expectedRadiusPx = expectedRadiusAt(geometry, ball, x, y);
+    // A specific search's circle is the expected one (SpecificHough); an OpenCV circle keeps its own.
+    if (c.source != CandidateSource::OpenCvHough) moved.radiusPx = moved.expectedRadiusPx;
     moved.rejected = RejectReason::None;
     return moved;
 }

@@ -19,8 +19,8 @@ double imageAngleAt(const Geometry& geometry, double x, double y);
 // a direction term (no angle is computed then).
 double expectedRadiusAt(const Geometry& geometry, const BallModel& ball, int x, int y);
 // `c` moved to (x, y) for a second look (`how`, and where the search had put it): its distance and
-// expected radius there, not yet judged (rejected None). The rest, radiusPx included, stays the
-// candidate's.
+// expected radius there (and the circle's radius, but for an OpenCV circle's), not yet judged
+// (rejected None). The rest stays the candidate's.
 BallCandidate movedCandidate(const BallCandidate& c, int x, int y, CandidateMove how, const Geometry& geometry,
                              const BallModel& ball);
 

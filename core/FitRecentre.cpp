@@ -26,7 +26,6 @@ int recentreOnFits(std::vector<BallCandidate>& candidates, std::size_t end, cons
         BallCandidate moved = movedCandidate(c, x, y, CandidateMove::ToCircleFit, geometry, ball);
         if (moved.expectedRadiusPx < options.refitMinRadiusPx) continue;
         ++tried;
-        moved.radiusPx = moved.expectedRadiusPx;  // a specific Hough candidate's circle is the expected one
         validateCandidate(moved, classes, edges, geometry, ball, options, colour, roles, stopAtColour);
         if (moved.rejected != RejectReason::None) continue;
         candidates[i] = moved;

@@ -347,6 +347,7 @@ private slots:
         QVERIFY(list[0].move == CandidateMove::ToCircleFit);  // the window's table says where it came from
         QCOMPARE(list[0].searchX, off.x);
         QCOMPARE(list[0].searchY, off.y);
+        QCOMPARE(list[0].radiusPx, list[0].expectedRadiusPx);  // a specific candidate's circle is the expected one
         QVERIFY2(std::hypot(list[0].x - p.x, list[0].y - p.y) <= 1.5,
                  qPrintable(QString("moved to (%1, %2), ball at (%3, %4)").arg(list[0].x).arg(list[0].y).arg(p.x).arg(p.y)));
     }
