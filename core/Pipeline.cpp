@@ -156,8 +156,8 @@ struct Pipeline::Impl {
         const std::size_t listed = std::size_t(r.hough.prefilterListed);
         const std::size_t judged = r.candidates.size() - listed - std::size_t(r.hough.prefilterUnlisted);
         if (judged > 0) validateFrom(0, r, judged);
-        r.hough.refitted = recentreOnFits(r.candidates, judged, r.classes, edges, geometry(), ball, config.validation,
-                                          colour, frontEnd.roles(), !explainRejections);
+        recentreOnFits(r.candidates, judged, r.classes, edges, geometry(), ball, config.validation, colour,
+                       frontEnd.roles(), !explainRejections);
         if (colour && config.validation.recentreRefused > 0) {
             const RecentreCounts n = recentreRefusals(r.candidates, judged, judged + listed, binary, r.classes, edges,
                                                       geometry(), ball, config.validation, *colour, frontEnd.roles());

@@ -87,9 +87,6 @@ struct HoughStats {
     // are validated candidates now, and no longer counted in prefilterListed).
     int recentreTried = 0;
     int recentred = 0;
-    // Set the same way (validation.refit_recentre): circularity refusals moved to their fitted
-    // circle's centre that passed there (validated in place of the refusal).
-    int refitted = 0;
 };
 
 class SpecificHough {

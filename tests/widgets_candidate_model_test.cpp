@@ -347,7 +347,6 @@ void CandidateModelTest::refittedCandidatesSayTheyMoved()
     r.candidates[0].move = CandidateMove::ToCircleFit;
     r.candidates[0].searchX = r.candidates[0].x - 4;
     r.candidates[0].searchY = r.candidates[0].y + 3;
-    r.hough.refitted = 1;
     CandidateTableModel model;
     model.setResult(r, Config{});
     const QString from = QString("(%1, %2)").arg(r.candidates[0].searchX).arg(r.candidates[0].searchY);

@@ -48,17 +48,13 @@ void CandidateTableModel::setResult(const PipelineResult& result, const Config& 
     beginResetModel();
     candidates_ = result.candidates;
     // The specific search lists its prefilter refusals (with Pipeline::setListEveryRefusal every
-    // one) after its own candidates, the recentred ones first (OpenCV's circles, appended later,
-    // are never prefiltered).
+    // one) after its own candidates (OpenCV's circles, appended later, are never prefiltered). The
+    // recentred ones that passed stand before them and say so themselves (BallCandidate::move).
     kinds_.assign(candidates_.size(), RowKind::Searched);
     int listed = result.hough.prefilterListed + result.hough.prefilterUnlisted;
-    int recentred = result.hough.recentred;
-    for (std::size_t i = candidates_.size(); i-- > 0 && listed + recentred > 0;) {
+    for (std::size_t i = candidates_.size(); i-- > 0 && listed > 0;) {
         if (candidates_[i].source == CandidateSource::OpenCvHough) continue;
-        if (listed > 0)
-            kinds_[i] = RowKind::Prefiltered, --listed;
-        else
-            kinds_[i] = RowKind::Recentred, --recentred;
+        kinds_[i] = RowKind::Prefiltered, --listed;
     }
     setThresholds(config);
     endResetModel();
@@ -85,7 +81,11 @@ CandidateTableModel::RowKind CandidateTableModel::kindOf(int row) const
 
 bool CandidateTableModel::isPrefiltered(int row) const { return kindOf(row) == RowKind::Prefiltered; }
 
-bool CandidateTableModel::isRecentred(int row) const { return kindOf(row) == RowKind::Recentred; }
+bool CandidateTableModel::isRecentred(int row) const
+{
+    return row >= 0 && std::size_t(row) < candidates_.size() &&
+           candidates_[std::size_t(row)].move == CandidateMove::ToColourCentroid;
+}
 
 const BallCandidate& CandidateTableModel::candidate(int row) const
 {

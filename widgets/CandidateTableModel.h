@@ -74,9 +74,9 @@ private:
     QVariant display(const BallCandidate& c, int column) const;
     QVariant sortValue(const BallCandidate& c, int column) const;
     QString columnToolTip(int column) const;
-    // Where a row came from: the searches, or the prefilter's refusals at the end of the specific
-    // search's rows (listed, or recentred and validated).
-    enum class RowKind : unsigned char { Searched, Prefiltered, Recentred };
+    // Where a row came from: the searches, or the prefilter's refusals listed at the end of the
+    // specific search's rows.
+    enum class RowKind : unsigned char { Searched, Prefiltered };
     RowKind kindOf(int row) const;
     QString cellToolTip(const BallCandidate& c, int column, RowKind kind) const;
 
