@@ -87,4 +87,9 @@ bool CarpetColour::matches(const Hsv& c, const CarpetTolerance& t) const
     return t.value <= 0 || std::abs(c.v - val_) <= std::max(t.value, t.sigmas * valSpread_);
 }
 
+bool CarpetColour::darker(double v, double tolerance, double sigmas) const
+{
+    return valid() && v < val_ - std::max(tolerance, sigmas * valSpread_);
+}
+
 }  // namespace omnitune

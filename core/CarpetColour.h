@@ -38,6 +38,9 @@ public:
 
     // Whether `c` is the carpet's colour (always true when not valid()).
     bool matches(const Hsv& c, const CarpetTolerance& t) const;
+    // Whether a pixel of brightness `v` is darker than the carpet by more than `tolerance` (and
+    // than `sigmas` of its spread): a ball's shaded side, not the carpet (false when not valid()).
+    bool darker(double v, double tolerance, double sigmas) const;
 
 private:
     static constexpr int kMinSamples = 12;

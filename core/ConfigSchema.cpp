@@ -570,6 +570,11 @@ std::vector<ConfigKey> buildSchema()
                           "carpet_by_colour: brightness is judged too when above 0 (never tighter than this); tells a shaded green "
                           "panel from the carpet, but also a shadow on the carpet",
                           [](auto& c) -> auto& { return c.validation.carpetTolerance.value; }));
+    s.push_back(doubleKey("validation.square_shade_tolerance", "value (0-255)", 0, 255, false,
+                          "carpet_by_colour: in the non-green test's square, a carpet-coloured pixel darker than the carpet around "
+                          "by more than this (or carpet_colour_sigmas spreads) is the ball's shaded side, when green_panel_min_own_pct "
+                          "of the square is neither carpet nor black; the borders never judge it. 0: off (colour alone)",
+                          [](auto& c) -> auto& { return c.validation.squareShadeTolerance; }));
     s.push_back(doubleKey("validation.carpet_ring_inner", "radii", 1, 10, false,
                           "carpet_by_colour: the carpet's colour is measured from this many expected radii (plus carpet_ring_margin_px) "
                           "out; smaller: the ball's blurred border and contact shadow enter the carpet's colour",

@@ -98,6 +98,13 @@ struct Circle {
         if (!roles.field(classAt(p))) return false;
         return !byColour() || carpet.matches(colour->hsvAt(p.x, p.y), options.carpetTolerance);
     }
+    // Carpet-coloured but darker than the carpet around by squareShadeTolerance: the ball's
+    // shaded side (the square's tests only).
+    bool shadedAt(cv::Point p) const
+    {
+        return byColour() && options.squareShadeTolerance > 0.0 &&
+               carpet.darker(colour->hsvAt(p.x, p.y).v, options.squareShadeTolerance, options.carpetTolerance.sigmas);
+    }
     // Carpet lies a little farther out than beyondEdgePx: the border's blend of ball and carpet
     // colours (motion blur, optics) is green by class but not the carpet's green yet.
     bool carpetFollows(double r, double ca, double sa) const
@@ -120,9 +127,8 @@ struct Circle {
 
 // Thesis' first two tests: the non-green and non-black shares of the processed pixels in the
 // candidate's square (and the share of the hinted ball colour). Green pixels count as green only
-// when they are carpet (carpetAt: of the carpet's colour, not an enclosed green panel); the
-// panels count only when the square's own non-green share (by colour alone) reaches
-// greenPanelMinOwnPct: a ball has its white panels, carpet by a line corner little.
+// when they are carpet (of the carpet's colour); in a square whose own non-green share reaches
+// greenPanelMinOwnPct, also not an enclosed green panel, nor darker than the carpet around.
 void scoreSquare(const Circle& c, int squareSide, ValidationScores& s)
 {
     const int half = squareSide / 2;
@@ -145,14 +151,20 @@ void scoreSquare(const Circle& c, int squareSide, ValidationScores& s)
     }
     if (used > 0) {
         const double ownPct = 100.0 * (used - colourGreen) / used;
-        // The green panels count only for a square with enough of its own colour: only then is
-        // the panel walk (carpetAt) worth its cost.
+        // A square with enough of its own colour (a ball's white panels; carpet by a line corner
+        // has little) is looked at again: its enclosed green panels (the walk) count as ball, and
+        // (squareShadeTolerance) its green darker than the carpet around, when enough of the
+        // square is neither carpet nor black (a robot's edge beside shaded carpet is not a ball).
+        // Only then: the walk is costly, and a shadow on the carpet is all green.
+        const bool shaded = 100.0 * (used - colourGreen - black) / used >= c.options.greenPanelMinOwnPct;
         int green = colourGreen;
-        if (ownPct >= c.options.greenPanelMinOwnPct && c.panels) {
+        if (ownPct >= c.options.greenPanelMinOwnPct && (c.panels || shaded)) {
             green = 0;
             for (int yy = y0; yy <= y1; ++yy) {
                 const std::uint8_t* u = c.geometry.usedMask().ptr<std::uint8_t>(yy);
-                for (int xx = x0; xx <= x1; ++xx) green += u[xx] && c.carpetAt({xx, yy});
+                for (int xx = x0; xx <= x1; ++xx)
+                    green += u[xx] && c.carpetColourAt({xx, yy}) && !(shaded && c.shadedAt({xx, yy})) &&
+                             !(c.panels && c.panels->at({xx, yy}));
             }
         }
         s.nonGreenPct = ownPct < c.options.greenPanelMinOwnPct ? ownPct : 100.0 * (used - green) / used;

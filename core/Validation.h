@@ -162,6 +162,14 @@ struct ValidationOptions {
     // with a FrameColour); without them, or with too little carpet around, every green is carpet.
     bool carpetByColour = true;
     CarpetTolerance carpetTolerance;
+    // The non-green test's square counts a carpet-coloured pixel darker than the carpet around
+    // the candidate by more than this (and than carpetTolerance.sigmas of its spread) as ball:
+    // a ball's shaded side and the green panels at its silhouette are darker than the carpet
+    // beside it. Only in a square of which greenPanelMinOwnPct is neither carpet nor black (a
+    // ball's own colours), so that a shadow on the carpet or a robot's shaded edge stays green;
+    // the borders never judge brightness this way (a contact shadow beside the ball is carpet
+    // there). 0: off (the thesis: colour alone).
+    double squareShadeTolerance = 20.0;  // V, 0..255
     // The ring the carpet's colour is measured in, around the candidate: from
     // carpetRingInner x radius + carpetRingMarginPx to carpetRingOuter x radius + 2 x
     // carpetRingMarginPx. Past the ball's blurred border and its contact shadow, before the next

@@ -569,6 +569,41 @@ private slots:
         QVERIFY2(on.rejected == RejectReason::None, qPrintable(verdict(on)));
     }
 
+    // Green of the carpet's hue and saturation but darker than the carpet beside it (a ball's
+    // shaded side, a green-and-white ball's panels at its silhouette) is ball in the non-green
+    // test's square (validation.square_shade_tolerance); off, the thesis' colour alone. A round
+    // shadow on the carpet, and a robot's black edge beside shaded carpet, stay green.
+    void shadedGreenIsBallInTheSquare()
+    {
+        Config c;
+        cv::Mat frame = greenField(c);
+        const cv::Point p = drawBall(frame, c, 130, 200, kWhite);
+        const int r = int(std::lround(expectedRadius(c, 130)));
+        const cv::Scalar shaded = kGreen * 0.75;  // V 105 against the carpet's 140
+        // Its far half shaded: open to the carpet, so not an enclosed green panel.
+        cv::ellipse(frame, p, cv::Size(r, r), 0, 90.0, 270.0, shaded, cv::FILLED);
+        const BallCandidate on = validateFrame(c, frame, p);
+        QVERIFY2(on.scores.nonGreenPct >= c.validation.minNonGreenPct, qPrintable(verdict(on)));
+        c.validation.squareShadeTolerance = 0;
+        const BallCandidate off = validateFrame(c, frame, p);
+        QVERIFY2(off.rejected == RejectReason::NonGreen, qPrintable(verdict(off)));
+        // 40 V darker than the carpet is not darker than a tolerance of 50.
+        c.validation.squareShadeTolerance = 50;
+        QCOMPARE(validateFrame(c, frame, p).rejected, RejectReason::NonGreen);
+
+        c.validation.squareShadeTolerance = 20;
+        cv::Mat shadow = greenField(c);
+        const cv::Point q = drawBall(shadow, c, 130, 200, shaded);
+        const BallCandidate round = validateFrame(c, shadow, q);
+        QVERIFY2(round.rejected == RejectReason::NonGreen, qPrintable(verdict(round)));
+        // Half the square a robot's black, half shaded carpet: nothing of a ball's own colours.
+        cv::Mat edge = greenField(c);
+        cv::circle(edge, q, 4 * r, shaded, cv::FILLED);
+        cv::rectangle(edge, cv::Point(q.x - 4 * r, q.y - 4 * r), cv::Point(q.x, q.y + 4 * r), kBlack, cv::FILLED);
+        const BallCandidate robot = validateFrame(c, edge, q);
+        QVERIFY2(robot.rejected == RejectReason::NonGreen, qPrintable(verdict(robot)));
+    }
+
     // Carpet by colour still sees carpet as carpet: noisy, vignetted carpet with a green speck
     // is rejected as before, and a disc of the carpet's own green (a lighter patch) is no ball.
     void carpetByColourKeepsCarpetGreen()
