@@ -188,7 +188,7 @@ private slots:
         QVERIFY(legend);
         const QString text = legend->text();
         for (const char* field : {"A3 98/100/96", "radial area", "non-green", "non-black", "circularity", "OpenCV",
-                                  "Ground truth", "rejected", "Accepted ball"})
+                                  "Ground truth", "rejected", "Accepted ball", "moved by a second look"})
             QVERIFY2(text.contains(field, Qt::CaseInsensitive), qPrintable(QString(field) + " not in:\n" + text));
         // Reachable from the View menu, and a tab beside the thresholds.
         bool inViewMenu = false;

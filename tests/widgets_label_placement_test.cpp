@@ -1,7 +1,8 @@
 // Overlay labels near the robot (widgets/LabelPlacement and the pane that uses it): on a crowded
 // synthetic candidate set no two labels overlap or touch and all stay inside the pane; a lone label sits
 // right beside its circle; a label moved away gets a leader line; and a real ImageView painting
-// a crowded overlay places its labels the same way and explains a candidate in its tooltip.
+// a crowded overlay places its labels the same way and explains a candidate in its tooltip; a
+// candidate a second look moved is drawn with where the search had put it.
 #include "widgets/ImageView.h"
 #include "widgets/LabelPlacement.h"
 
@@ -144,6 +145,47 @@ private slots:
         for (const QString& word : {QString("radial area"), nonGreen, QString("non-black"), QString("circularity")})
             QVERIFY2(tip.contains(word), qPrintable(tip));
         QToolTip::hideText();
+    }
+
+    // A moved candidate (BallCandidate::move) shows the search's centre: a cross there, dotted to
+    // its circle. The same candidate unmoved draws nothing between the two.
+    void paneShowsWhereAMovedCandidateCameFrom()
+    {
+        ViewTransform transform;
+        OverlayOptions options;
+        ImageView view("acquired", &transform, &options);
+        view.resize(480, 480);
+        QImage image(480, 480, QImage::Format_RGB888);
+        image.fill(QColor(40, 120, 40));
+        view.setImage(image);
+        BallCandidate k;
+        k.x = 300;
+        k.y = 240;
+        k.radiusPx = 8;
+        k.searchX = 260;
+        k.searchY = 240;
+        k.rejected = RejectReason::Circularity;
+        auto paint = [&](CandidateMove move) {
+            auto overlay = std::make_shared<OverlayData>();
+            overlay->config.geometry.centerX = 120;
+            overlay->config.geometry.centerY = 120;
+            k.move = move;
+            overlay->candidates = {k};
+            view.setOverlay(overlay);
+            return view.grab().toImage();
+        };
+        const QImage still = paint(CandidateMove::None);
+        const QImage moved = paint(CandidateMove::ToCircleFit);
+        // Between the search's centre and the circle (image x 260-292 on row 240).
+        int changed = 0;
+        for (int x = 255; x <= 290; ++x) {
+            const QPoint at = view.toWidget(QPointF(x, 240)).toPoint();
+            for (int dy = -4; dy <= 4; ++dy) changed += moved.pixel(at + QPoint(0, dy)) != still.pixel(at + QPoint(0, dy));
+        }
+        QVERIFY2(changed >= 12, qPrintable(QString::number(changed)));
+        const QPoint cross = view.toWidget(QPointF(k.searchX, k.searchY)).toPoint();
+        QCOMPARE(QColor(still.pixel(cross)), QColor(40, 120, 40));
+        QVERIFY(QColor(moved.pixel(cross)) != QColor(40, 120, 40));
     }
 };
 

@@ -167,8 +167,10 @@ void ImageView::paintOverlay(QPainter& p) const
         }
         for (const BallCandidate& k : overlay_->candidates) {
             const bool ok = k.rejected == RejectReason::None;
-            p.setPen(QPen(ok ? overlay_colour::accepted() : overlay_colour::rejected(), ok ? 2 : 1));
+            const QColor colour = ok ? overlay_colour::accepted() : overlay_colour::rejected();
+            p.setPen(QPen(colour, ok ? 2 : 1));
             circle(QPointF(k.x, k.y), std::max(k.radiusPx, 2.0));
+            if (k.move != CandidateMove::None) paintMove(p, k, colour);
         }
     }
     if (showBall) {
@@ -219,6 +221,22 @@ void ImageView::paintOverlay(QPainter& p) const
         p.setPen(QPen(overlay_colour::cursor(), 1, Qt::DotLine));
         circle(cursor_, BallModel(c.ball).radiusAt(d));
     }
+}
+
+// A candidate a second look moved: a small cross where the search put it, dotted to its circle.
+void ImageView::paintMove(QPainter& p, const BallCandidate& k, const QColor& colour) const
+{
+    const QPointF from = toWidget(QPointF(k.searchX, k.searchY));
+    const QPointF to = toWidget(QPointF(k.x, k.y));
+    p.setPen(QPen(colour, 1));
+    p.drawLine(from - QPointF(3, 3), from + QPointF(3, 3));
+    p.drawLine(from - QPointF(3, -3), from + QPointF(3, -3));
+    const QPointF dir = to - from;
+    const double len = std::hypot(dir.x(), dir.y());
+    const double rim = std::max(k.radiusPx, 2.0) * scale();
+    if (len <= rim) return;  // the search's centre is inside the circle: the cross says it all
+    p.setPen(QPen(colour, 1, Qt::DotLine));
+    p.drawLine(from, to - dir * (rim / len));
 }
 
 void ImageView::paintTruth(QPainter& p) const

@@ -64,6 +64,7 @@ private:
     QPointF imageCenter() const;
     void paintOverlay(QPainter& p) const;  // places the labels (labels_)
     void paintTruth(QPainter& p) const;
+    void paintMove(QPainter& p, const BallCandidate& k, const QColor& colour) const;
 
     QString title_;
     ViewTransform* transform_;

@@ -12,7 +12,7 @@ namespace omnitune {
 
 namespace {
 
-enum class Swatch { Ring, DashedRing, DottedRing, ThickRing, Cross, Line, Fill };
+enum class Swatch { Ring, DashedRing, DottedRing, ThickRing, Cross, Line, Fill, Move };
 
 // The mark as the panes draw it, small.
 QPixmap swatch(Swatch kind, const QColor& colour)
@@ -29,6 +29,13 @@ QPixmap swatch(Swatch kind, const QColor& colour)
         p.drawLine(14, 4, 14, 16);
         break;
     case Swatch::Line: p.drawLine(3, 16, 25, 4); break;
+    case Swatch::Move:  // as ImageView::paintMove draws it
+        p.drawLine(2, 13, 8, 19);
+        p.drawLine(2, 19, 8, 13);
+        p.drawEllipse(QPointF(20, 8), 6, 6);
+        p.setPen(QPen(colour, 1.5, Qt::DotLine));
+        p.drawLine(QPointF(5, 16), QPointF(15.8, 12.2));
+        break;
     case Swatch::Fill: p.fillRect(QRectF(4, 3, 20, 14), colour); break;
     default: p.drawEllipse(QPointF(14, 10), 7, 7); break;
     }
@@ -54,6 +61,8 @@ OverlayLegend::OverlayLegend(QWidget* parent) : QWidget(parent)
         {Swatch::ThickRing, overlay_colour::accepted(), tr("Accepted ball, labelled with its field position in metres")},
         {Swatch::Ring, overlay_colour::accepted(), tr("Candidate that passed validation")},
         {Swatch::Ring, overlay_colour::rejected(), tr("Candidate rejected (hover it for the test it failed)")},
+        {Swatch::Move, overlay_colour::rejected(), tr("Candidate moved by a second look: the cross is where the search put it "
+                                                      "(its table row and tooltip say why)")},
         {Swatch::DashedRing, overlay_colour::truth(), tr("Ground truth marked for this frame (Truth menu)")},
         {Swatch::DottedRing, overlay_colour::cursor(), tr("Expected ball size under the cursor (ball model)")},
     };
