@@ -36,6 +36,21 @@ std::vector<LabelRequest> crowd(int n, QPointF centre, double spread, unsigned s
     return labels;
 }
 
+// A 480-px-wide pane showing a 480x480 frame of plain carpet, for its overlays alone.
+struct CarpetPane {
+    ViewTransform transform;
+    OverlayOptions options;
+    ImageView view{"acquired", &transform, &options};
+
+    explicit CarpetPane(int height)
+    {
+        view.resize(480, height);
+        QImage image(480, 480, QImage::Format_RGB888);
+        image.fill(QColor(40, 120, 40));
+        view.setImage(image);
+    }
+};
+
 }  // namespace
 
 class LabelPlacementTest : public QObject {
@@ -102,13 +117,8 @@ private slots:
 
     void paneWithCrowdedCandidates()
     {
-        ViewTransform transform;
-        OverlayOptions options;
-        ImageView view("acquired", &transform, &options);
-        view.resize(480, 360);
-        QImage image(480, 480, QImage::Format_RGB888);
-        image.fill(QColor(40, 120, 40));
-        view.setImage(image);
+        CarpetPane pane(360);
+        ImageView& view = pane.view;
         auto overlay = std::make_shared<OverlayData>();
         overlay->config.geometry.centerX = 240;
         overlay->config.geometry.centerY = 240;
@@ -151,13 +161,8 @@ private slots:
     // its circle. The same candidate unmoved draws nothing between the two.
     void paneShowsWhereAMovedCandidateCameFrom()
     {
-        ViewTransform transform;
-        OverlayOptions options;
-        ImageView view("acquired", &transform, &options);
-        view.resize(480, 480);
-        QImage image(480, 480, QImage::Format_RGB888);
-        image.fill(QColor(40, 120, 40));
-        view.setImage(image);
+        CarpetPane pane(480);
+        ImageView& view = pane.view;
         BallCandidate k;
         k.x = 300;
         k.y = 240;
