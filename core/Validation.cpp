@@ -98,12 +98,11 @@ struct Circle {
         if (!roles.field(classAt(p))) return false;
         return !byColour() || carpet.matches(colour->hsvAt(p.x, p.y), options.carpetTolerance);
     }
-    // Carpet-coloured but darker than the carpet around by squareShadeTolerance: the ball's
-    // shaded side (the square's tests only).
+    // Darker than the carpet around by squareShadeTolerance: a carpet-coloured pixel of the
+    // ball's shaded side (the square's tests only; needs byColour()).
     bool shadedAt(cv::Point p) const
     {
-        return byColour() && options.squareShadeTolerance > 0.0 &&
-               carpet.darker(colour->hsvAt(p.x, p.y).v, options.squareShadeTolerance, options.carpetTolerance.sigmas);
+        return carpet.darker(colour->hsvAt(p.x, p.y).v, options.squareShadeTolerance, options.carpetTolerance.sigmas);
     }
     // Carpet lies a little farther out than beyondEdgePx: the border's blend of ball and carpet
     // colours (motion blur, optics) is green by class but not the carpet's green yet.
@@ -156,7 +155,8 @@ void scoreSquare(const Circle& c, int squareSide, ValidationScores& s)
         // (squareShadeTolerance) its green darker than the carpet around, when enough of the
         // square is neither carpet nor black (a robot's edge beside shaded carpet is not a ball).
         // Only then: the walk is costly, and a shadow on the carpet is all green.
-        const bool shaded = 100.0 * (used - colourGreen - black) / used >= c.options.greenPanelMinOwnPct;
+        const bool shaded = c.options.squareShadeTolerance > 0.0 && c.byColour() &&
+                            100.0 * (used - colourGreen - black) / used >= c.options.greenPanelMinOwnPct;
         int green = colourGreen;
         if (ownPct >= c.options.greenPanelMinOwnPct && (c.panels || shaded)) {
             green = 0;
