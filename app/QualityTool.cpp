@@ -31,7 +31,7 @@ std::vector<OptionSpec> qualityToolOptions()
         {"auto-colours", true, false, "N     with --quality-matrix: each cell's colours by Auto colours from N frames of its field and light (default 0: the default colours)"},
         {"false-positives", false, false, "      with --quality-matrix: list every false-positive frame with its scores"},
         {"fp-crops", true, false, "DIR   with --false-positives: also write each one's surroundings, enlarged, as PNGs to DIR"},
-        {"miss-list", false, false, "      with --quality-matrix: list every missed ball frame of combined (the candidate at the ball, its scores)"},
+        {"miss-list", false, false, "      with --quality-matrix: list every missed ball frame of combined (the candidate at the ball, its scores; \"(prefilter)\": refused before validation)"},
         {"miss-cause", true, false, "NAME  with --miss-list: only misses of this cause (e.g. non-green, no-candidate, circularity)"},
         {"miss-crops", true, false, "DIR   with --miss-list: also write each missed ball's surroundings, enlarged, as PNGs to DIR"},
         {"deviations", true, false, "FILE  with --quality-matrix: also run each deviation from the thesis switched off (specific, combined)"},

@@ -97,6 +97,40 @@ private slots:
         QCOMPARE(countFiles(none), 0);
     }
 
+    void aPrefilterRefusalAtTheBallIsMarked()
+    {
+        // A square twice the ball's diameter is mostly carpet: the candidate prefilter refuses every
+        // maximum at the ball on its class share, and validation never sees one. The list says so,
+        // as its scores are the prefilter's, not validation's.
+        const QualityVariant wideSquare{"specific, ball.square_ratio=2", Algorithm::Specific,
+                                        {{"ball.square_ratio", "2", ""}}};
+        QualityRunOptions options;
+        options.recordMisses = true;
+        const QualityRun run = runQuality(orangeCell(), {wideSquare}, Config{}, options);
+        const QualityTally& t = run.cells.at(0).tallies.at(0);
+        QCOMPARE(t.correct, 0);
+        int marked = 0;
+        for (const MissedFrame& m : t.missedFrames) {
+            if (!m.hasCandidate) continue;
+            QVERIFY2(m.atBallPrefiltered, "the witness at the ball should be a prefilter refusal");
+            QVERIFY2(m.cause == MissCause::NonGreen, std::string(missCauseName(m.cause)).c_str());
+            ++marked;
+        }
+        QVERIFY2(marked > 0, "some miss should have a candidate at the ball");
+        const std::string md = missListMarkdown(run, {0});
+        QVERIFY2(md.find("| non-green (prefilter) |") != std::string::npos, md.c_str());
+
+        // Validated candidates are not marked: the refuse-all variant's witnesses were validated
+        // (their shape was measured) and refused as too small.
+        const QualityRun validated = runOrange(true);
+        for (const MissedFrame& m : validated.cells.at(0).tallies.at(0).missedFrames) {
+            QVERIFY(m.hasCandidate);
+            QVERIFY(m.atBall.scores.shapeMeasured);
+            QVERIFY(!m.atBallPrefiltered);
+        }
+        QVERIFY(missListMarkdown(validated, {0}).find("(prefilter)") == std::string::npos);
+    }
+
     void missesAreKeptOnlyWhenAsked()
     {
         const QualityRun run = runOrange(false);

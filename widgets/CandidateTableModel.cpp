@@ -1,6 +1,7 @@
 #include "widgets/CandidateTableModel.h"
 
 #include "core/Config.h"
+#include "core/PrefilterRefusals.h"
 
 #include <QBrush>
 #include <QColor>
@@ -47,15 +48,12 @@ void CandidateTableModel::setResult(const PipelineResult& result, const Config& 
 {
     beginResetModel();
     candidates_ = result.candidates;
-    // The specific search lists its prefilter refusals (with Pipeline::setListEveryRefusal every
-    // one) after its own candidates (OpenCV's circles, appended later, are never prefiltered). The
-    // recentred ones that passed stand before them and say so themselves (BallCandidate::move).
+    // The recentred refusals that passed are validated candidates now and say so themselves
+    // (BallCandidate::move).
+    const std::vector<bool> refused = prefilterRefusals(result);
     kinds_.assign(candidates_.size(), RowKind::Searched);
-    int listed = result.hough.prefilterListed + result.hough.prefilterUnlisted;
-    for (std::size_t i = candidates_.size(); i-- > 0 && listed > 0;) {
-        if (candidates_[i].source == CandidateSource::OpenCvHough) continue;
-        kinds_[i] = RowKind::Prefiltered, --listed;
-    }
+    for (std::size_t i = 0; i < refused.size(); ++i)
+        if (refused[i]) kinds_[i] = RowKind::Prefiltered;
     setThresholds(config);
     endResetModel();
 }

@@ -37,6 +37,7 @@ std::string missListMarkdown(const QualityRun& run, const std::vector<std::size_
                 std::snprintf(ball, sizeof ball, "(%.0f, %.0f) r %.1f, %.2f m", m.truthPx, m.truthPy, m.truthRadiusPx,
                               m.truthRangeM);
                 std::string why(missCauseName(m.cause));
+                if (m.hasCandidate && m.atBallPrefiltered) why += " (prefilter)";
                 if (m.radiusOff) why += " (radius model off)";
                 char elsewhere[64] = "-";
                 if (m.detected) std::snprintf(elsewhere, sizeof elsewhere, "(%d, %d)", m.chosen.x, m.chosen.y);

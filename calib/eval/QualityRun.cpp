@@ -4,6 +4,7 @@
 
 #include "core/ConfigWriter.h"
 #include "core/Pipeline.h"
+#include "core/PrefilterRefusals.h"
 #include "core/Stopwatch.h"
 
 #include <algorithm>
@@ -226,7 +227,11 @@ private:
         m.cause = cause;
         m.radiusOff = radiusOff;
         m.hasCandidate = atBall != nullptr;
-        if (atBall) m.atBall = *atBall;
+        if (atBall) {
+            m.atBall = *atBall;
+            const std::size_t index = std::size_t(atBall - result_.candidates.data());
+            m.atBallPrefiltered = prefilterRefusals(result_).at(index);
+        }
         const BallDetection& d = result_.detection;
         m.detected = d.found && d.candidate >= 0 && d.candidate < int(result_.candidates.size());
         if (m.detected) m.chosen = result_.candidates[std::size_t(d.candidate)];

@@ -55,6 +55,9 @@ struct MissedFrame {
     bool radiusOff = false;         // the candidate's expected radius is off the true one
     bool hasCandidate = false;
     BallCandidate atBall;           // when hasCandidate
+    // atBall is a prefilter refusal (core/PrefilterRefusals.h): its colour scores are the class
+    // shares at the Hough maximum, and validation never saw it.
+    bool atBallPrefiltered = false;
     bool detected = false;          // something else was detected in the frame
     BallCandidate chosen;           // when detected
     FrameCrop crop;                 // BGR around the ball (cropAroundCircle)
