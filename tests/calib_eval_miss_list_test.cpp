@@ -4,6 +4,7 @@
 // ball of an orange, normal-light cell, so the test does not depend on today's detector.
 #include "calib/eval/MissList.h"
 #include "calib/eval/QualityMatrix.h"
+#include "calib/eval/QualityReport.h"
 #include "calib/eval/QualityRun.h"
 #include "PlainFile.h"
 
@@ -117,8 +118,18 @@ private slots:
             ++marked;
         }
         QVERIFY2(marked > 0, "some miss should have a candidate at the ball");
+        QCOMPARE(t.missesPrefiltered, marked);  // the tally counts them too
         const std::string md = missListMarkdown(run, {0});
         QVERIFY2(md.find("| non-green (prefilter) |") != std::string::npos, md.c_str());
+        // The misses table's last column says how many of the misses the prefilter refused.
+        const std::string table = qualityMissesMarkdown(run, 0);
+        QVERIFY2(table.find("| by the prefilter |") != std::string::npos, table.c_str());
+        const std::string allRow = "| all ball cells | " + std::to_string(t.withBall) + " |";
+        const std::size_t row = table.find(allRow);
+        QVERIFY2(row != std::string::npos, table.c_str());
+        const std::string line = table.substr(row, table.find('\n', row) - row);
+        const std::string last = " " + std::to_string(marked) + " |";
+        QVERIFY2(line.size() > last.size() && line.compare(line.size() - last.size(), last.size(), last) == 0, line.c_str());
 
         // Validated candidates are not marked: the refuse-all variant's witnesses were validated
         // (their shape was measured) and refused as too small.
@@ -129,6 +140,7 @@ private slots:
             QVERIFY(!m.atBallPrefiltered);
         }
         QVERIFY(missListMarkdown(validated, {0}).find("(prefilter)") == std::string::npos);
+        QCOMPARE(validated.cells.at(0).tallies.at(0).missesPrefiltered, 0);
     }
 
     void missesAreKeptOnlyWhenAsked()

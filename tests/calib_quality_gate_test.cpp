@@ -191,6 +191,7 @@ private slots:
             const int misses = std::accumulate(t.missCauses.begin(), t.missCauses.end(), 0);
             QCOMPARE(misses, t.withBall - t.correct);
             QVERIFY(t.missesRadiusOff <= misses);
+            QVERIFY(t.missesPrefiltered <= misses);
             QCOMPARE(std::accumulate(t.falsePositiveKinds.begin(), t.falsePositiveKinds.end(), 0), t.falsePositives);
         }
         const std::string md = qualityMissesMarkdown(run_, shippedVariants(run_).back());

@@ -15,7 +15,7 @@ std::string format(const char* f, double v)
     return buf;
 }
 
-std::string pct(const QualityTally& t)
+std::string pct(const BallFrameTally& t)
 {
     if (t.withBall == 0) return "—";
     return format("%.1f %%", t.detectionPct()) + " (" + std::to_string(t.correct) + "/" + std::to_string(t.withBall) + ")";
@@ -121,6 +121,14 @@ std::string qualityBreakdownMarkdown(const QualityRun& run, const std::vector<st
         for (std::size_t v : variants) md += " " + pct(qualityTotal(run, v, row.filter)) + " |";
         md += "\n";
     }
+    std::vector<QualityTally> totals;
+    for (std::size_t v : variants) totals.push_back(qualityTotal(run, v));
+    for (std::size_t p = 0; p < kBallPlaceCount; ++p) {
+        if (totals.empty() || totals.front().byPlace[p].withBall == 0) continue;
+        md += "| " + std::string(ballPlaceName(BallPlace(p))) + " |";
+        for (const QualityTally& t : totals) md += " " + pct(t.byPlace[p]) + " |";
+        md += "\n";
+    }
     return md;
 }
 
@@ -132,14 +140,17 @@ std::string qualityMissesMarkdown(const QualityRun& run, std::size_t variant)
         md += " " + std::string(missCauseName(MissCause(i))) + " |";
         rule += "---|";
     }
-    md += " radius model off |\n" + rule + "---|\n";
-    auto row = [&](const std::string& label, const QualityTally& t) {
+    md += " radius model off | by the prefilter |\n" + rule + "---|---|\n";
+    auto row = [&](const std::string& label, const BallFrameTally& t) {
         md += "| " + label + " | " + std::to_string(t.withBall - t.correct) + " |";
         for (int n : t.missCauses) md += " " + (n ? std::to_string(n) : std::string("·")) + " |";
-        md += " " + std::to_string(t.missesRadiusOff) + " |\n";
+        md += " " + std::to_string(t.missesRadiusOff) + " | " + std::to_string(t.missesPrefiltered) + " |\n";
     };
-    row("all ball cells", qualityTotal(run, variant, ball));
+    const QualityTally all = qualityTotal(run, variant, ball);
+    row("all ball cells", all);
     for (const ConditionRow& r : conditionRows(run)) row(r.label, qualityTotal(run, variant, r.filter));
+    for (std::size_t p = 0; p < kBallPlaceCount; ++p)
+        if (all.byPlace[p].withBall > 0) row(ballPlaceName(BallPlace(p)), all.byPlace[p]);
     return md;
 }
 

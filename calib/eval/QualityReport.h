@@ -11,12 +11,14 @@ namespace omnitune {
 // false-positive frames, range bias / std within 4 m, p50 / p99 time per frame.
 std::string qualitySummaryMarkdown(const QualityRun& run, const std::vector<std::size_t>& variants);
 
-// Balls found per ball kind, light, distractors and frame size (rows), one column per variant.
+// Balls found per ball kind, light, distractors and frame size (rows), then per place of the ball
+// in its frame (calib/eval/BallPlace.h: range band, out of play), one column per variant.
 std::string qualityBreakdownMarkdown(const QualityRun& run, const std::vector<std::size_t>& variants);
 
 // Why the variant missed the balls it missed (calib/eval/FrameDiagnosis.h): one row for all ball
-// cells, then one per condition as in qualityBreakdownMarkdown; a column per cause, and how many
-// of the misses had a candidate at the ball whose expected radius was off the true one.
+// cells, then one per condition and place as in qualityBreakdownMarkdown; a column per cause, how
+// many of the misses had a candidate at the ball whose expected radius was off the true one, and
+// how many had one the search's prefilter refused (counted under the test it is named after).
 std::string qualityMissesMarkdown(const QualityRun& run, std::size_t variant);
 
 // What the false positives hit (which search proposed them, where they sit), one column per

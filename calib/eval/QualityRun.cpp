@@ -43,18 +43,26 @@ std::vector<QualityVariant> deviationVariants(const std::vector<ConfigOverride>&
 
 void QualityTally::add(const QualityTally& o)
 {
+    BallFrameTally::add(o);
     frames += o.frames;
-    withBall += o.withBall;
-    correct += o.correct;
     falsePositives += o.falsePositives;
     rangeErrorsM.insert(rangeErrorsM.end(), o.rangeErrorsM.begin(), o.rangeErrorsM.end());
     timesMs.insert(timesMs.end(), o.timesMs.begin(), o.timesMs.end());
-    for (std::size_t i = 0; i < missCauses.size(); ++i) missCauses[i] += o.missCauses[i];
-    missesRadiusOff += o.missesRadiusOff;
+    for (std::size_t i = 0; i < byPlace.size(); ++i) byPlace[i].add(o.byPlace[i]);
     for (std::size_t i = 0; i < falsePositiveKinds.size(); ++i) falsePositiveKinds[i] += o.falsePositiveKinds[i];
 }
 
-double QualityTally::detectionPct() const { return withBall ? 100.0 * correct / withBall : 0.0; }
+void BallFrameTally::add(const BallFrameTally& o)
+{
+    withBall += o.withBall;
+    correct += o.correct;
+    for (std::size_t i = 0; i < missCauses.size(); ++i) missCauses[i] += o.missCauses[i];
+    missesRadiusOff += o.missesRadiusOff;
+    missesPrefiltered += o.missesPrefiltered;
+}
+
+double BallFrameTally::detectionPct() const { return withBall ? 100.0 * correct / withBall : 0.0; }
+
 double QualityTally::falsePositivePct() const { return frames ? 100.0 * falsePositives / frames : 0.0; }
 
 double QualityTally::rangeBiasCm() const
@@ -179,23 +187,42 @@ private:
                 tally.falsePositiveFrames.push_back(falsePositiveFrame(int(f), truth, kind, rendered.frames[f]));
             }
             if (!truth.ballVisible) continue;
-            ++tally.withBall;
-            if (verdict != TruthVerdict::Correct) {
+            BallFrameTally ball;
+            ++ball.withBall;
+            if (verdict == TruthVerdict::Correct) {
+                ++ball.correct;
+                const double trueRange = std::hypot(truth.xM, truth.yM);
+                if (trueRange <= options_.rangeWithinM)
+                    tally.rangeErrorsM.push_back(std::hypot(outcome.detection.xM, outcome.detection.yM) - trueRange);
+            } else {
                 bool radiusOff = false;
                 const BallCandidate* atBall = nullptr;
                 const MissCause cause = diagnoseMiss(result_, truth, config.validation, &radiusOff, &atBall);
-                ++tally.missCauses[std::size_t(cause)];
-                tally.missesRadiusOff += radiusOff;
+                ++ball.missCauses[std::size_t(cause)];
+                ball.missesRadiusOff += radiusOff;
+                ball.missesPrefiltered += atBall && prefiltered(*atBall);
                 if (options_.recordMisses)
                     tally.missedFrames.push_back(missedFrame(int(f), truth, cause, radiusOff, atBall, rendered.frames[f]));
-                continue;
             }
-            ++tally.correct;
-            const double trueRange = std::hypot(truth.xM, truth.yM);
-            if (trueRange <= options_.rangeWithinM)
-                tally.rangeErrorsM.push_back(std::hypot(outcome.detection.xM, outcome.detection.yM) - trueRange);
+            countBallFrame(tally, ball, ballPlacesOf(truth, rendered.field, rendered.ballRadiusM));
         }
         return tally;
+    }
+
+    // Whether `candidate` (one of result_'s) is a prefilter refusal; only for misses, so the flag
+    // vector's allocation stays off the found frames.
+    bool prefiltered(const BallCandidate& candidate) const
+    {
+        const std::size_t index = std::size_t(&candidate - result_.candidates.data());
+        return prefilterRefusals(result_).at(index);
+    }
+
+    // Adds one ball frame's counts to the tally's totals and to each place it belongs to.
+    static void countBallFrame(QualityTally& tally, const BallFrameTally& frame, const std::array<bool, kBallPlaceCount>& places)
+    {
+        tally.BallFrameTally::add(frame);
+        for (std::size_t p = 0; p < kBallPlaceCount; ++p)
+            if (places[p]) tally.byPlace[p].add(frame);
     }
 
     // A false positive's record; rare, so its crop may allocate.
@@ -229,8 +256,7 @@ private:
         m.hasCandidate = atBall != nullptr;
         if (atBall) {
             m.atBall = *atBall;
-            const std::size_t index = std::size_t(atBall - result_.candidates.data());
-            m.atBallPrefiltered = prefilterRefusals(result_).at(index);
+            m.atBallPrefiltered = prefiltered(*atBall);
         }
         const BallDetection& d = result_.detection;
         m.detected = d.found && d.candidate >= 0 && d.candidate < int(result_.candidates.size());

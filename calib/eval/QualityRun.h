@@ -3,6 +3,7 @@
 // through the optics simulator, runs every variant (an algorithm, optionally with config keys
 // overridden) with the cell's fitted config, judges each frame by calib/eval/Evaluation.h's rules
 // and tallies per cell; groups (per ball kind, light, distractors, size, overall) add cells up.
+#include "calib/eval/BallPlace.h"
 #include "calib/eval/ConfigOverride.h"
 #include "calib/eval/Evaluation.h"
 #include "calib/eval/FrameCrop.h"
@@ -63,21 +64,37 @@ struct MissedFrame {
     FrameCrop crop;                 // BGR around the ball (cropAroundCircle)
 };
 
-// What one variant did on a set of frames.
-struct QualityTally {
+// Ball frames: found, missed and why (a variant's all, or one place's: calib/eval/BallPlace.h).
+struct BallFrameTally {
+    int withBall = 0;  // frames where the ball is visible
+    int correct = 0;   // of them, found within the evaluation's max error
+    // Why each missed ball frame was missed (indexed by MissCause), and how many of those misses
+    // had a candidate at the ball whose expected radius was off the true one by more than the
+    // circle fit allows.
+    std::array<int, kMissCauseCount> missCauses{};
+    int missesRadiusOff = 0;
+    // Of the misses, how many had a candidate at the ball that the search's prefilter refused
+    // (core/PrefilterRefusals.h): validation never judged it, whatever test the cause names.
+    // Counted from the listed refusals: complete only with explainRejections (--misses).
+    int missesPrefiltered = 0;
+
+    void add(const BallFrameTally& other);
+    double detectionPct() const;  // correct / withBall; 0 without ball frames
+};
+
+// What one variant did on a set of frames. Its ball frames' counts (BallFrameTally: frames where
+// the ball is visible, found within the evaluation's max error, misses) are those of all of them.
+struct QualityTally : BallFrameTally {
     int frames = 0;          // judged frames (ball or not)
-    int withBall = 0;        // frames where the ball is visible
-    int correct = 0;         // ball frames found within the evaluation's max error
     int falsePositives = 0;  // detections in ball-free frames or too far from the truth
     // Correct detections of balls within QualityRunOptions::rangeWithinM: detected minus true
     // horizontal distance from the robot, m.
     std::vector<double> rangeErrorsM;
     std::vector<double> timesMs;  // whole pipeline per frame
-    // Why each missed ball frame was missed (indexed by MissCause), how many of those misses had
-    // a candidate at the ball whose expected radius was off the true one by more than the circle
-    // fit allows, and what each false positive hit (indexed by falsePositiveKindIndex).
-    std::array<int, kMissCauseCount> missCauses{};
-    int missesRadiusOff = 0;
+    // The ball frames again, by where the ball lay (a frame counts in its range band, and in
+    // OutOfPlay too when it is that).
+    std::array<BallFrameTally, kBallPlaceCount> byPlace{};
+    // What each false positive hit (indexed by falsePositiveKindIndex).
     std::array<int, kFalsePositiveKindCount> falsePositiveKinds{};
     // Each false positive of a cell's tally; add() leaves them out (totals count, cells list).
     std::vector<FalsePositiveFrame> falsePositiveFrames;
@@ -86,7 +103,6 @@ struct QualityTally {
     std::vector<MissedFrame> missedFrames;
 
     void add(const QualityTally& other);
-    double detectionPct() const;      // correct / withBall; 0 without ball frames
     double falsePositivePct() const;  // falsePositives / frames
     double rangeBiasCm() const;       // mean of rangeErrorsM; 0 when empty
     double rangeStdCm() const;        // population std of rangeErrorsM; 0 when empty

@@ -51,6 +51,8 @@ struct OpticsCellFrames {
     std::map<int, TruthRow> truth;        // one row per frame (calib/session/TruthCsv.h)
     Config fittedConfig;                  // from the camera's measurements, never the truth
     std::string calibrationError;         // empty, or why the fit failed (fittedConfig is then `base`)
+    FieldDimensions field;                // the field the scenes stand on (where a truth row's ball lies)
+    double ballRadiusM = 0.0;             // the scenes' ball radius, m
 };
 
 // Renders one cell. Calibrates the cell's camera (image size + mirror) from its measurements
