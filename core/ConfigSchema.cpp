@@ -494,6 +494,12 @@ std::vector<ConfigKey> buildSchema()
                           "run_on_hue_step: only pixels (and a centre) with at least this chroma (max - min of B, G, R) have a "
                           "hue to compare; lower: noise on grey and dark pixels decides their hue",
                           [](auto& c) -> auto& { return c.validation.runOnHueMinChroma; }));
+    s.push_back(doubleKey("validation.run_on_colour_step", "levels (B+G+R)", 0, 765, false,
+                          "In the run-on test an unclassified pixel ends the run of an unclassified centre when their colours "
+                          "differ by more than this, the three channels' absolute differences added, and the pixel is no darker: "
+                          "another object, such as the hall floor beyond the carpet a ball lies against; lower: shading along a "
+                          "line ends runs too. 0: off",
+                          [](auto& c) -> auto& { return c.validation.runOnColourStep; }));
     s.push_back(doubleKey("validation.min_usable_ray_share", "fraction", 0, 1, false,
                           "Circularity is judged only when this share of the circle's rays crosses processed pixels (the rest lie on "
                           "the robot body or rods); below it the candidate fails; lower: judges a mostly hidden circle by a few rays",

@@ -463,6 +463,7 @@ struct CentreColour {
     int hue;     // OpenCV's 0-179
     int chroma;  // max - min of B, G, R
     int mean;    // mean of B, G, R
+    std::array<std::uint8_t, 3> bgr;
 };
 
 // Whether an unclassified pixel is line paint beside an unclassified coloured centre: greyer by
@@ -483,6 +484,18 @@ bool otherHue(const std::array<std::uint8_t, 3>& pixel, const CentreColour& cent
         return false;
     const int apart = std::abs(bgrToHsv(pixel[0], pixel[1], pixel[2]).h - centre.hue);
     return std::min(apart, 180 - apart) >= options.runOnHueStep;
+}
+
+// Whether an unclassified pixel's colour lies more than run_on_colour_step (B + G + R absolute
+// differences) from an unclassified centre's and is no darker: another object, such as the hall
+// floor beyond the carpet a ball lies against. A darker one may be the candidate's own shading or
+// what it stands on (a leg's shoe), and does not end the run.
+bool otherColour(const std::array<std::uint8_t, 3>& pixel, const CentreColour& centre, double step)
+{
+    if (step <= 0.0 || channelMean(pixel) < centre.mean) return false;
+    int apart = 0;
+    for (std::size_t k = 0; k < 3; ++k) apart += std::abs(int(pixel[k]) - int(centre.bgr[k]));
+    return apart > step;
 }
 
 // Whether the centre's colour class goes on without a break along one ray out to `reach` px;
@@ -506,7 +519,7 @@ std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double re
         if (centre && cls == std::uint8_t(ColorClass::Unknown)) {
             const auto bgr = c.colour->bgrAt(p.x, p.y);
             if ((c.options.runOnChromaStep > 0.0 && lineBesideColour(bgr, *centre, c.options.runOnChromaStep)) ||
-                otherHue(bgr, *centre, c.options))
+                otherHue(bgr, *centre, c.options) || otherColour(bgr, *centre, c.options.runOnColourStep))
                 return false;
         }
     }
@@ -514,11 +527,12 @@ std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double re
 }
 
 // The mean colour of the 3x3 pixels at the centre, when the centre is unclassified and
-// run_on_chroma_step or run_on_hue_step is on.
+// run_on_chroma_step, run_on_hue_step or run_on_colour_step is on.
 std::optional<CentreColour> unclassifiedCentreColour(const Circle& c)
 {
     const cv::Point centre(c.x, c.y);
-    if (!c.colour || (c.options.runOnChromaStep <= 0.0 && c.options.runOnHueStep <= 0.0) || !c.known(centre) ||
+    if (!c.colour || (c.options.runOnChromaStep <= 0.0 && c.options.runOnHueStep <= 0.0 && c.options.runOnColourStep <= 0.0) ||
+        !c.known(centre) ||
         c.classAt(centre) != std::uint8_t(ColorClass::Unknown))
         return std::nullopt;
     int sum[3] = {0, 0, 0};
@@ -532,7 +546,7 @@ std::optional<CentreColour> unclassifiedCentreColour(const Circle& c)
             ++n;
         }
     const std::array<std::uint8_t, 3> bgr{std::uint8_t(sum[0] / n), std::uint8_t(sum[1] / n), std::uint8_t(sum[2] / n)};
-    return CentreColour{bgrToHsv(bgr[0], bgr[1], bgr[2]).h, chroma(bgr), channelMean(bgr)};
+    return CentreColour{bgrToHsv(bgr[0], bgr[1], bgr[2]).h, chroma(bgr), channelMean(bgr), bgr};
 }
 
 // Our run-on test: the share of judged rays along which the centre's colour runs on beyond the

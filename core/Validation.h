@@ -96,6 +96,15 @@ struct ValidationOptions {
     // leg's blue trousers over a near-grey shoe (chroma 7-9) on seed 1's 2-frame sample.
     double runOnHueStep = 20.0;
     double runOnHueMinChroma = 12.0;  // 0..255, chroma (max - min of B, G, R); see runOnHueStep
+    // 0..765 (B + G + R); in the run-on test an unclassified pixel also ends the run of an
+    // unclassified centre when their colours differ by more than this, the three channels'
+    // absolute differences added, and the pixel is no darker: another object, whatever its hue or
+    // chroma. A ball at the carpet's edge lies against the grey hall floor, and one touching a
+    // line in shade against its unclassified paint; the hue and chroma steps miss a dark ball on a
+    // grey floor. "No darker" keeps a leg running on into its shoe. Optics matrix, 4 frames per
+    // cell, seeds 1-8, combined: 5528 -> 5589 balls, false-positive frames 32 -> 32; without "no
+    // darker" 5593 / 33 (and one more on the 2-frame matrix: the leg). 0: off.
+    double runOnColourStep = 60.0;
     // Fraction of the circle's rays; rays whose whole search band lies on unprocessed pixels
     // (robot body, rods) say nothing about the shape and are left out. With fewer usable rays
     // than this share the circularity is not judged (0 %, so the candidate fails).

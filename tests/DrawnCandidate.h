@@ -45,6 +45,12 @@ inline BallCandidate validateAt(const Config& c, const cv::Mat& frame, cv::Point
     return cand;
 }
 
+// The colour class id the front end gives pixel `p` of `frame` under `c` (0: no class).
+inline int classAt(const Config& c, const cv::Mat& frame, cv::Point p)
+{
+    return int(EdgeStages(c, frame).classes.at<std::uint8_t>(p));
+}
+
 // The candidate at the centre of what `draw(frame, centre, expectedRadius)` drew `distance` px
 // from the robot centre at `angleDeg`, validated under `c` with its own colour roles.
 template <class Draw>

@@ -27,6 +27,13 @@ inline cv::Point2d pointAt(const Config& c, double distance, double angleDeg)
     return {c.geometry.centerX + distance * std::cos(a), c.geometry.centerY - distance * std::sin(a)};
 }
 
+// The unit vector away from the robot centre at `angleDeg` (as pointAt: image y points down).
+inline cv::Point2d radialAt(double angleDeg)
+{
+    const double a = angleDeg * M_PI / 180.0;
+    return {std::cos(a), -std::sin(a)};
+}
+
 // The pixel nearest to `p`.
 inline cv::Point rounded(const cv::Point2d& p)
 {

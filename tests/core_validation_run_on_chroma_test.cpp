@@ -78,6 +78,10 @@ private slots:
         QVERIFY(c.validation.runOnChromaStep > 0.0);
         const BallCandidate on = validateAt(c, frame, p);
         QVERIFY2(on.rejected == RejectReason::None, qPrintable(verdict(on)));
+        // The colour step (run_on_colour_step) ends this run too: off, so the chroma step's own
+        // effect shows.
+        c.validation.runOnColourStep = 0.0;
+        QCOMPARE(validateAt(c, frame, p).rejected, RejectReason::None);
         c.validation.runOnChromaStep = 0.0;
         const BallCandidate off = validateAt(c, frame, p);
         QVERIFY2(off.rejected == RejectReason::RunsOn, qPrintable(verdict(off)));
