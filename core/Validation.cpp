@@ -463,7 +463,7 @@ struct CentreColour {
     int hue;     // OpenCV's 0-179
     int chroma;  // max - min of B, G, R
     int mean;    // mean of B, G, R
-    std::array<std::uint8_t, 3> bgr;
+    std::array<std::uint8_t, 3> bgr;  // the 3x3 mean colour itself, B, G, R
 };
 
 // Whether an unclassified pixel is line paint beside an unclassified coloured centre: greyer by
@@ -500,8 +500,9 @@ bool otherColour(const std::array<std::uint8_t, 3>& pixel, const CentreColour& c
 
 // Whether the centre's colour class goes on without a break along one ray out to `reach` px;
 // nothing when the ray meets black (a robot) or an unprocessed pixel: it is not judged. With
-// `centre` (run_on_chroma_step, run_on_hue_step), the run also stops at unclassified line paint
-// or another hue: the class says nothing of an unclassified pixel's colour.
+// `centre` (run_on_chroma_step, run_on_hue_step, run_on_colour_step), the run also stops at
+// unclassified line paint, another hue or another, no darker colour: the class says nothing of an
+// unclassified pixel's colour.
 std::optional<bool> runsOnAlong(const Circle& c, double ca, double sa, double reach,
                                 const std::optional<CentreColour>& centre)
 {

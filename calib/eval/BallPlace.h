@@ -1,7 +1,7 @@
 #pragma once
 // Where a ball frame's ball lay, for the quality report's per-frame rows: its true range from the
-// robot, in bands (the matrix spreads its frames 0.5-5 m, and the far band holds half of the
-// misses), and whether it lay wholly beyond the field's outer lines, out of play. The matrix
+// robot, in bands (the matrix spreads its frames 0.5-5 m, and the far band holds nearly half
+// of the misses), and whether it lay wholly beyond the field's outer lines, out of play. The matrix
 // keeps every ball on the carpet (calib/sim/optics/OpticsCell.cpp, keepBallOnCarpet) by sliding a
 // ball drawn past it to the carpet's edge, 1 m beyond the lines, where its image lies over the
 // hall floor: the rows say how many of the figures are such balls, without leaving them out.
