@@ -240,10 +240,10 @@ class ColourDoneWhenTest : public QObject {
         qInfo("%s: default colours %.0f %%, auto %.0f %% (carpet hue %d, V %d), after %d stroke(s) %.0f %%",
               opticsCellName(tour.cell).c_str(), before, afterAuto, r.carpetHue, r.carpetV, strokes, afterStrokes);
         QVERIFY2(afterStrokes >= kDoneWhenPct, qPrintable(QString::number(afterStrokes)));
-        // Calibrating loses nothing the default colours find, give or take one marginal frame:
-        // since validation.run_on_colour_step the default colours find the dim tour's frame 27 (an
-        // unclassified orange ball at 3.9 m beside a shadow 61 levels from its centre, the step
-        // 60), which the calibrated colours, with the ball classified, still miss as "runs on".
+        // Calibrating loses nothing the default colours find, give or take one frame: since
+        // validation.run_on_colour_step the default colours find the dim tour's frame 27 (an
+        // orange ball at 3.9 m on a line, unclassified by them), which the calibrated colours
+        // classify as the ball, so the step does not apply, and still miss as "runs on".
         int frames = 0;
         for (std::size_t f = 0; f < tour.rendered.frames.size(); ++f) frames += judged(tour, int(f)) ? 1 : 0;
         const double oneFrame = frames > 0 ? 100.0 / frames : 0.0;
