@@ -280,10 +280,9 @@ OpticsCellFrames renderCell(const OpticsCell& cell, const Config& base)
     out.fittedConfig = cam.calibration->ok() ? cam.calibration->config : base;
     out.calibrationError = cam.calibration->error.value_or("");
     out.field = cam.renderer->field().dimensions();
-    out.ballRadiusM = OpticsScene{}.ballRadius;
+    out.ballRadiusM = OpticsScene{}.ballRadius;  // opticsCellScene keeps the default ball
     for (int i = 0; i < cell.frames; ++i) {
         const OpticsScene scene = opticsCellScene(cell, i, *cam.renderer);
-        out.ballRadiusM = scene.ballRadius;
         OpticsTruth t;
         out.frames.push_back(cam.renderer->render(scene, &t));
         out.truth[i] = toTruthRow(t, i, cell.ballPresent);
