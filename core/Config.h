@@ -8,6 +8,7 @@
 #include "core/ColorLut.h"
 #include "core/DistanceMap.h"
 #include "core/Edges.h"
+#include "core/FrameDenoise.h"
 #include "core/Geometry.h"
 #include "core/OpenCvHough.h"
 #include "core/RadialSensors.h"
@@ -23,6 +24,7 @@ struct Config {
     CameraAutoOptions cameraAuto;
     ColorLutOptions colors;
     GeometryOptions geometry;
+    DenoiseOptions denoise;
     RadialSensorOptions sensors;
     DistanceMapOptions distanceMap;
     BallModelOptions ball;

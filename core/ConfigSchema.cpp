@@ -167,6 +167,18 @@ std::vector<ConfigKey> buildSchema()
                           "to hold them (stray pixels at a ball's blurred rim); 0 covers every sample. Not used by the detector",
                           [](auto& c) -> auto& { return c.colors.sampleOutlierPct; }));
 
+    // frame denoise (before segmentation)
+    s.push_back(doubleKey("denoise.above_noise", "levels", 0.0, 255.0, false,
+                          "A BGR frame whose sensor noise (sigma of the green channel over the ring, estimated from the frame: "
+                          "core/FrameNoise.h) is above this is blurred before segmentation (3x3 Gaussian, blur_sigma): "
+                          "noise turns carpet pixels into other classes and breaks a small ball's outline. Clean frames read "
+                          "1.5-3, noisy ones 5-6 on the optics matrix; a clean frame is not blurred, which would cost far balls "
+                          "their contrast. 0: never (thesis). UYVY frames are never blurred",
+                          [](auto& c) -> auto& { return c.denoise.aboveNoise; }));
+    s.push_back(doubleKey("denoise.blur_sigma", "px", 0.1, 3.0, false,
+                          "above_noise: the 3x3 Gaussian's sigma; larger smooths more noise and blurs small balls more",
+                          [](auto& c) -> auto& { return c.denoise.blurSigma; }));
+
     // geometry
     s.push_back(intKey("geometry.image_width", "px", 16, 4096, true, "Frame width this geometry belongs to; other frame sizes are refused",
                        [](auto& c) -> auto& { return c.geometry.imageWidth; }));
@@ -1022,6 +1034,7 @@ std::string configSchemaMarkdown()
                         "its level. Controller gains are fractions of the feature's range per unit of error."},
         {"colors", "The colour table's size and relative black. The colour classes themselves are the list "
                    "`colors.classes`, described below the table."},
+        {"denoise", "A blur of noisy frames before segmentation (not in the thesis)."},
         {"geometry", "Where the robot is in the image and which pixels are processed."},
         {"sensors", "Radial sensors for line and obstacle search (thesis Fig. 4.3)."},
         {"distance_map", "Image distance (px) to ground distance (m), monotone cubic through the calibration points; "

@@ -5,6 +5,7 @@
 #include "core/CandidateScore.h"
 #include "core/ConfigSchema.h"
 #include "core/FrameColour.h"
+#include "core/FrameDenoise.h"
 #include "core/FrontEnd.h"
 #include "core/FitRecentre.h"
 #include "core/RefusalRecentre.h"
@@ -113,13 +114,14 @@ void paintVotes(const cv::Mat& sums, cv::Mat& out)
 
 struct Pipeline::Impl {
     explicit Impl(const Config& c)
-        : config(c), frontEnd(c), distanceMap(c.distanceMap), ball(c.ball),
+        : config(c), denoiser(c.denoise), frontEnd(c), distanceMap(c.distanceMap), ball(c.ball),
           hough(c.hough, frontEnd.geometry(), ball, candidatePrefilterFor(c)),
           opencvOptions(speckFreeHoughOptions(c.opencvHough, c.edges))
     {
     }
 
     Config config;
+    FrameDenoiser denoiser;
     FrontEnd frontEnd;
     DistanceMap distanceMap;
     BallModel ball;
@@ -241,9 +243,14 @@ void Pipeline::process(const cv::Mat& frame, PixelFormat format, PipelineResult&
     if (!r.error.empty()) return;
 
     Stopwatch clock;
-    p.frontEnd.process(frame, format, r.classes, p.binary, p.edges, &r.timings);
+    const cv::Mat& input = p.denoiser.apply(frame, format, p.geometry().spans());
+    r.frameNoise = p.denoiser.lastNoise();
+    r.denoised = p.denoiser.lastBlurred();
+    const double denoiseMs = clock.lap();
+    p.frontEnd.process(input, format, r.classes, p.binary, p.edges, &r.timings);
     clock.lap();  // the front end timed its own stages
-    const FrameColour colour(frame, format);
+    r.timings.segmentMs += denoiseMs;  // the blur prepares segmentation
+    const FrameColour colour(input, format);
     p.colour = &colour;
     p.searchBall(r, clock);
     p.colour = nullptr;

@@ -83,6 +83,7 @@ SpecificHough::SpecificHough(const SpecificHoughOptions& options, const Geometry
             }
         }
     }
+    centreVote_ = cv::Mat::zeros(size, CV_8UC1);
     accumulator_ = cv::Mat::zeros(size, CV_16UC1);
     sums_ = cv::Mat::zeros(size, CV_32SC1);
     rowSums_.assign(std::size_t(size.width) * 3, 0);
@@ -193,7 +194,22 @@ void SpecificHough::vote(const cv::Mat& edges, const cv::Mat& binary)
 
     // Votes: every edge pixel adds its weight on its locus, at centres that are processed and
     // not green (binary 0): weight & ~binary is the weight where binary is 0, else 0; and at
-    // masked centres inside the ring (maskedCentres), whose colour is unknown.
+    // masked centres inside the ring (maskedCentres), whose colour is unknown (a masked centre
+    // has binary 255 and weight 0; its vote comes from maskedWeight_).
+    // One look-up per vote instead of three: this frame's vote at every centre (zero outside
+    // centreSpans_ since construction, where both weights are zero).
+    for (const RowSpan& s : centreSpans_) {
+        const std::uint8_t* used = weight_.ptr<std::uint8_t>(s.y);
+        const std::uint8_t* masked = maskedWeight_.ptr<std::uint8_t>(s.y);
+        const std::uint8_t* bin = binary.ptr<std::uint8_t>(s.y);
+        std::uint8_t* out = centreVote_.ptr<std::uint8_t>(s.y);
+        for (int x = s.x0; x < s.x1; ++x) out[x] = std::uint8_t((used[x] & std::uint8_t(~bin[x])) | masked[x]);
+    }
+    const std::uint8_t* centreVote = centreVote_.data;
+    const std::size_t voteStep = centreVote_.step[0];
+    auto* accumulator = reinterpret_cast<std::uint16_t*>(accumulator_.data);
+    const std::size_t accumulatorStep = accumulator_.step1(0);
+
     const double cx0 = geometry_->options().centerX;
     const double cy0 = geometry_->options().centerY;
     fillBytes(accumulator_, 0);
@@ -229,11 +245,8 @@ void SpecificHough::vote(const cv::Mat& edges, const cv::Mat& binary)
                 const int cx = x + dx;
                 const int cy = s.y + dy;
                 if (unsigned(cx) >= unsigned(w) || unsigned(cy) >= unsigned(h)) continue;
-                // A masked centre has binary 255 and weight 0; its vote comes from maskedWeight_.
-                const std::uint8_t vote = std::uint8_t(
-                    (weight_.ptr<std::uint8_t>(cy)[cx] & std::uint8_t(~binary.ptr<std::uint8_t>(cy)[cx])) |
-                    maskedWeight_.ptr<std::uint8_t>(cy)[cx]);
-                accumulator_.ptr<std::uint16_t>(cy)[cx] += vote;
+                accumulator[std::size_t(cy) * accumulatorStep + std::size_t(cx)] +=
+                    centreVote[std::size_t(cy) * voteStep + std::size_t(cx)];
             }
         }
     }

@@ -149,6 +149,7 @@ private:
     std::size_t lociPerSector_ = 0;
     cv::Mat weight_;    // CV_8UC1 votes a processed non-green centre gets: 0 outside the processed ring
     cv::Mat maskedWeight_;  // CV_8UC1 votes a masked centre inside the ring gets (maskedCentres), else 0
+    cv::Mat centreVote_;  // CV_8UC1 this frame's vote at each centre: (weight_ & ~binary) | maskedWeight_
     std::vector<RowSpan> centreSpans_;  // where a centre may lie: processed, or masked in the ring
     cv::Mat areaIndex_; // CV_8UC1 radial area of each pixel, 255 = none
     cv::Mat accumulator_;

@@ -64,12 +64,20 @@ void RunSummary::showResult(const PipelineRun& run)
     averaged_ = std::min(averaged_ + 1, 99);  // a running average over about the last 100 frames
     // Short: status messages share the status bar and must not be cut off; the stages are in
     // the tooltip.
-    timing_->setText(tr("%1 ms (avg %2)").arg(t.totalMs, 0, 'f', 1).arg(averageMs_, 0, 'f', 1));
+    const PipelineResult& r = run.result;
+    // A blurred frame is marked: its segmentation differs from what the acquired pane shows.
+    timing_->setText(tr("%1 ms (avg %2)").arg(t.totalMs, 0, 'f', 1).arg(averageMs_, 0, 'f', 1) +
+                     (r.denoised ? tr(", noisy: blurred") : QString()));
+    const QString noise = r.frameNoise <= 0.0 ? tr("Frame noise not measured (denoise.above_noise 0, or a UYVY frame).")
+                          : r.denoised ? tr("Frame noise %1 levels, above denoise.above_noise: the frame was blurred "
+                                            "before segmentation.").arg(r.frameNoise, 0, 'f', 1)
+                                       : tr("Frame noise %1 levels: not blurred.").arg(r.frameNoise, 0, 'f', 1);
     timing_->setToolTip(tr("This frame, ms: segmentation %1, binary image %2, Canny edges %3, Hough %4, validation %5; "
                            "total %6, and the running average over about 100 frames %7")
                             .arg(t.segmentMs, 0, 'f', 1).arg(t.binaryMs, 0, 'f', 1).arg(t.edgesMs, 0, 'f', 1)
                             .arg(t.houghMs, 0, 'f', 1).arg(t.validationMs, 0, 'f', 1).arg(t.totalMs, 0, 'f', 1)
-                            .arg(averageMs_, 0, 'f', 1));
+                            .arg(averageMs_, 0, 'f', 1) +
+                        "\n" + noise);
 }
 
 void RunSummary::setTruth(const QString& text, bool marking)

@@ -39,6 +39,7 @@ struct Section {
 };
 
 const Section kSections[] = {
+    {"denoise", QT_TRANSLATE_NOOP("omnitune::ThresholdPanel", "Denoise (noisy frames)")},
     {"edges", QT_TRANSLATE_NOOP("omnitune::ThresholdPanel", "Edges (Canny)")},
     {"hough", QT_TRANSLATE_NOOP("omnitune::ThresholdPanel", "Specific Hough (thesis 4.1)")},
     {"opencv_hough", QT_TRANSLATE_NOOP("omnitune::ThresholdPanel", "OpenCV Hough (thesis 4.2)")},

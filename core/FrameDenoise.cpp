@@ -1,0 +1,70 @@
+#include "core/FrameDenoise.h"
+
+#include "core/FrameNoise.h"
+#include "core/Geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace omnitune {
+
+FrameDenoiser::FrameDenoiser(const DenoiseOptions& options) : options_(options)
+{
+    // The 3x3 Gaussian is separable: (e, 1, e) / (1 + 2e) with e = exp(-1 / (2 sigma^2)), in 8-bit
+    // fixed point per pass.
+    const double e = std::exp(-1.0 / (2.0 * std::max(1e-3, options.blurSigma) * std::max(1e-3, options.blurSigma)));
+    side_ = int(std::lround(256.0 * e / (1.0 + 2.0 * e)));
+}
+
+const cv::Mat& FrameDenoiser::apply(const cv::Mat& frame, PixelFormat format, const std::vector<RowSpan>& spans)
+{
+    lastNoise_ = 0.0;
+    lastBlurred_ = false;
+    if (options_.aboveNoise <= 0.0 || format != PixelFormat::Bgr8) return frame;
+    lastNoise_ = frameNoiseSigma(frame, spans);
+    if (lastNoise_ <= options_.aboveNoise) return frame;
+    blur(frame);
+    lastBlurred_ = true;
+    return blurred_;
+}
+
+void FrameDenoiser::blur(const cv::Mat& frame)
+{
+    CV_Assert(frame.type() == CV_8UC3);
+    const int h = frame.rows;
+    const int n = 3 * frame.cols;  // values per row; a pixel's neighbours are 3 values away
+    blurred_.create(frame.size(), CV_8UC3);
+    rows_.resize(3 * std::size_t(n));
+    const unsigned side = unsigned(side_);
+    const unsigned centre = 256u - 2u * side;
+
+    // The horizontal pass of row y into the ring slot y % 3 (border replicated).
+    auto horizontal = [&](int y) {
+        const std::uint8_t* in = frame.ptr<std::uint8_t>(y);
+        std::uint16_t* out = rows_.data() + std::size_t(y % 3) * std::size_t(n);
+        auto at = [&](int i) {
+            const int l = i >= 3 ? i - 3 : i;
+            const int r = i + 3 < n ? i + 3 : i;
+            return std::uint16_t(side * in[l] + centre * in[i] + side * in[r]);
+        };
+        const int edge = std::min(3, n);
+        for (int i = 0; i < edge; ++i) out[i] = at(i);
+        for (int i = 3; i < n - 3; ++i) out[i] = std::uint16_t(side * in[i - 3] + centre * in[i] + side * in[i + 3]);
+        for (int i = std::max(edge, n - 3); i < n; ++i) out[i] = at(i);
+    };
+    auto slot = [&](int y) { return rows_.data() + std::size_t(y % 3) * std::size_t(n); };
+
+    horizontal(0);
+    if (h > 1) horizontal(1);
+    for (int y = 0; y < h; ++y) {
+        if (y + 1 < h && y + 1 >= 2) horizontal(y + 1);  // overwrites row y - 2, no longer needed
+        const std::uint16_t* up = slot(std::max(y - 1, 0));
+        const std::uint16_t* mid = slot(y);
+        const std::uint16_t* down = slot(std::min(y + 1, h - 1));
+        std::uint8_t* out = blurred_.ptr<std::uint8_t>(y);
+        for (int i = 0; i < n; ++i)
+            out[i] = std::uint8_t((side * up[i] + centre * mid[i] + side * down[i] + 32768u) >> 16);
+    }
+}
+
+}  // namespace omnitune
