@@ -12,7 +12,8 @@ FrameDenoiser::FrameDenoiser(const DenoiseOptions& options) : options_(options)
 {
     // The 3x3 Gaussian is separable: (e, 1, e) / (1 + 2e) with e = exp(-1 / (2 sigma^2)), in 8-bit
     // fixed point per pass.
-    const double e = std::exp(-1.0 / (2.0 * std::max(1e-3, options.blurSigma) * std::max(1e-3, options.blurSigma)));
+    const double sigma = std::max(1e-3, options.blurSigma);
+    const double e = std::exp(-1.0 / (2.0 * sigma * sigma));
     side_ = int(std::lround(256.0 * e / (1.0 + 2.0 * e)));
 }
 
@@ -38,10 +39,12 @@ void FrameDenoiser::blur(const cv::Mat& frame)
     const unsigned side = unsigned(side_);
     const unsigned centre = 256u - 2u * side;
 
-    // The horizontal pass of row y into the ring slot y % 3 (border replicated).
+    // Row y's horizontal pass lives in the ring slot y % 3.
+    auto slot = [&](int y) { return rows_.data() + std::size_t(y % 3) * std::size_t(n); };
+    // The horizontal pass of row y into its slot (border replicated).
     auto horizontal = [&](int y) {
         const std::uint8_t* in = frame.ptr<std::uint8_t>(y);
-        std::uint16_t* out = rows_.data() + std::size_t(y % 3) * std::size_t(n);
+        std::uint16_t* out = slot(y);
         auto at = [&](int i) {
             const int l = i >= 3 ? i - 3 : i;
             const int r = i + 3 < n ? i + 3 : i;
@@ -52,7 +55,6 @@ void FrameDenoiser::blur(const cv::Mat& frame)
         for (int i = 3; i < n - 3; ++i) out[i] = std::uint16_t(side * in[i - 3] + centre * in[i] + side * in[i + 3]);
         for (int i = std::max(edge, n - 3); i < n; ++i) out[i] = at(i);
     };
-    auto slot = [&](int y) { return rows_.data() + std::size_t(y % 3) * std::size_t(n); };
 
     horizontal(0);
     if (h > 1) horizontal(1);
