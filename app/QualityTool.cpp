@@ -28,6 +28,7 @@ std::vector<OptionSpec> qualityToolOptions()
         {"threads", true, false, "N     with --quality-matrix: cells on N threads (default 1, honest timings; 0: all)"},
         {"misses", false, false, "      with --quality-matrix: why balls were missed and what false positives hit, per condition"},
         {"cells", true, false, "A,B   with --quality-matrix: only the cells whose name holds every one of these parts (e.g. dim,rods)"},
+        {"pixel-format", true, false, "F     with --quality-matrix: the format the detector reads the frames in: bgr8 (default) or uyvy (YUV 4:2:2, an IIDC camera's)"},
         {"auto-colours", true, false, "N     with --quality-matrix: each cell's colours by Auto colours from N frames of its field and light (default 0: the default colours)"},
         {"false-positives", false, false, "      with --quality-matrix: list every false-positive frame with its scores"},
         {"fp-crops", true, false, "DIR   with --false-positives: also write each one's surroundings, enlarged, as PNGs to DIR"},
@@ -109,6 +110,10 @@ int runQualityTool(const CommandLine& cl)
         if (!v || *v < 0 || *v > 30) return fail("--auto-colours must be a whole number from 0 to 30, not '" + *t + "'");
         runOptions.autoColourFrames = *v;
     }
+    if (auto f = cl.value("pixel-format")) {
+        if (*f == "uyvy") runOptions.pixelFormat = PixelFormat::Uyvy;
+        else if (*f != "bgr8") return fail("--pixel-format must be bgr8 or uyvy, not '" + *f + "'");
+    }
     std::optional<MissCause> missCause;
     if (auto name = cl.value("miss-cause")) {
         missCause = missCauseNamed(*name);
@@ -135,10 +140,10 @@ int runQualityTool(const CommandLine& cl)
     for (const OpticsCell& c : cells) ballCells += c.ballPresent;
     char head[512];
     std::snprintf(head, sizeof head,
-                  "%zu cells: %d with a ball x %d frames, %d ball-free x %d frames; seed %u; %zu detector runs per frame. "
+                  "%zu cells: %d with a ball x %d frames, %d ball-free x %d frames; seed %u%s; %zu detector runs per frame. "
                   "Rendering and calibration %.1f s (over threads), wall %.1f s.\n\n",
                   cells.size(), ballCells, matrix.framesPerCell, int(cells.size()) - ballCells,
-                  matrix.ballFreeFramesPerCell, matrix.seed, variants.size(), run.renderMs / 1000.0, totalS);
+                  matrix.ballFreeFramesPerCell, matrix.seed, runOptions.pixelFormat == PixelFormat::Uyvy ? "; frames read as UYVY" : "", variants.size(), run.renderMs / 1000.0, totalS);
     const std::vector<std::size_t> shipped = shippedVariants(run);
     std::string md = head;
     md += "### Overall\n\n" + qualitySummaryMarkdown(run, shipped) + "\n";

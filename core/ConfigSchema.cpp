@@ -169,11 +169,13 @@ std::vector<ConfigKey> buildSchema()
 
     // frame denoise (before segmentation)
     s.push_back(doubleKey("denoise.above_noise", "levels", 0.0, 255.0, false,
-                          "A BGR frame whose sensor noise (sigma of the green channel over the ring, estimated from the frame: "
+                          "A frame whose sensor noise (sigma of the green channel over the ring, estimated from the frame: "
                           "core/FrameNoise.h) is above this is blurred before segmentation (3x3 Gaussian, blur_sigma): "
                           "noise turns carpet pixels into other classes and breaks a small ball's outline. Clean frames read "
                           "1.5-3, noisy ones 5-6 on the optics matrix; a clean frame is not blurred, which would cost far balls "
-                          "their contrast. 0: never (thesis). UYVY frames are never blurred",
+                          "their contrast. A UYVY frame's green is rebuilt from Y, U and V; its pairs share their colour, so "
+                          "the same noise reads about three quarters as high (noisy 3.9-4.5), and only its U and V are blurred. "
+                          "0: never (thesis)",
                           [](auto& c) -> auto& { return c.denoise.aboveNoise; }));
     s.push_back(doubleKey("denoise.blur_sigma", "px", 0.1, 3.0, false,
                           "above_noise: the 3x3 Gaussian's sigma; larger smooths more noise and blurs small balls more",

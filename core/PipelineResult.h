@@ -46,7 +46,7 @@ struct PipelineResult {
     std::vector<BallCandidate> candidates;
     StageTimings timings;
     HoughStats hough;   // edge pixels voting (subsampled beyond hough.max_edge_pixels), maxima, seeds
-    double frameNoise = 0.0;  // the frame's noise sigma, levels (0: not measured: denoise.above_noise 0, or UYVY)
+    double frameNoise = 0.0;  // the frame's noise sigma, levels (0: not measured: denoise.above_noise 0)
     bool denoised = false;    // the frame was blurred before segmentation (denoise.above_noise)
     bool opencvSkipped = false;  // combined: the OpenCV search was due but skipped (opencv_hough.max_edge_pixels)
     StageImages stages;

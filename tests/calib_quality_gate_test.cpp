@@ -310,6 +310,27 @@ private slots:
                  qPrintable(QString("%1 -> %2 of %3").arg(byDefault.correct).arg(calibrated.correct).arg(calibrated.withBall)));
     }
 
+    // --pixel-format uyvy: the detector reads each rendered frame as an IIDC camera's YUV 4:2:2
+    // (the robot's path: UYVY segmentation, noise estimate and blur). On noisy frames it must
+    // find what BGR finds, give or take the pairs' shared colour at a small ball's border. The
+    // conversion itself is calib/uyvy_encoding's test.
+    void uyvyFramesAreReadAsTheRobotReadsThem()
+    {
+        OpticsCell cell;
+        cell.distractors = OpticsDistractors::NoiseBlur;
+        cell.frames = 8;
+        cell.seed = 3;
+        QualityRunOptions options;
+        const QualityTally bgr = qualityTotal(runQuality({cell}, algorithmVariants(), {}, options), 0);
+        options.pixelFormat = PixelFormat::Uyvy;
+        const QualityTally uyvy = qualityTotal(runQuality({cell}, algorithmVariants(), {}, options), 0);
+        qInfo("orange, noise, specific: BGR %d, UYVY %d of %d balls", bgr.correct, uyvy.correct, uyvy.withBall);
+        QCOMPARE(uyvy.withBall, bgr.withBall);
+        QVERIFY2(uyvy.correct >= bgr.correct - 1 && uyvy.correct >= uyvy.withBall - 2,
+                 qPrintable(QString("BGR %1, UYVY %2 of %3").arg(bgr.correct).arg(uyvy.correct).arg(uyvy.withBall)));
+        QCOMPARE(uyvy.falsePositives, 0);
+    }
+
     void floors_data()
     {
         QTest::addColumn<QString>("algorithm");

@@ -68,7 +68,7 @@ void RunSummary::showResult(const PipelineRun& run)
     // A blurred frame is marked: its segmentation differs from what the acquired pane shows.
     timing_->setText(tr("%1 ms (avg %2)").arg(t.totalMs, 0, 'f', 1).arg(averageMs_, 0, 'f', 1) +
                      (r.denoised ? tr(", noisy: blurred") : QString()));
-    const QString noise = r.frameNoise <= 0.0 ? tr("Frame noise not measured (denoise.above_noise 0, or a UYVY frame).")
+    const QString noise = r.frameNoise <= 0.0 ? tr("Frame noise not measured (denoise.above_noise 0).")
                           : r.denoised ? tr("Frame noise %1 levels, above denoise.above_noise: the frame was blurred "
                                             "before segmentation.").arg(r.frameNoise, 0, 'f', 1)
                                        : tr("Frame noise %1 levels: not blurred.").arg(r.frameNoise, 0, 'f', 1);

@@ -1,6 +1,7 @@
 #include "calib/eval/QualityRun.h"
 
 #include "calib/colour/AutoColour.h"
+#include "calib/sim/UyvyEncoding.h"
 
 #include "core/ConfigWriter.h"
 #include "core/Pipeline.h"
@@ -174,7 +175,12 @@ private:
         for (std::size_t f = 0; f < rendered.frames.size(); ++f) {
             const auto t = rendered.truth.find(int(f));
             if (t == rendered.truth.end()) continue;
-            pipeline.process(rendered.frames[f], PixelFormat::Bgr8, result_);
+            if (options_.pixelFormat == PixelFormat::Uyvy) {
+                convertBgrToUyvy(rendered.frames[f], uyvy_);
+                pipeline.process(uyvy_, PixelFormat::Uyvy, result_);
+            } else {
+                pipeline.process(rendered.frames[f], PixelFormat::Bgr8, result_);
+            }
             const FrameOutcome outcome = outcomeOf(int(f), result_);
             const TruthRow& truth = t->second;
             const TruthVerdict verdict = judge(outcome, &truth, options_.evaluation);
@@ -270,6 +276,7 @@ private:
     const QualityRunOptions& options_;
     std::vector<std::map<std::string, std::unique_ptr<Pipeline>>> pipelines_;
     PipelineResult result_;
+    cv::Mat uyvy_;  // options_.pixelFormat Uyvy: the frame as the detector reads it
 };
 
 }  // namespace

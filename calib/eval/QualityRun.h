@@ -10,6 +10,7 @@
 #include "calib/eval/FrameDiagnosis.h"
 #include "calib/sim/optics/OpticsCell.h"
 #include "core/Algorithm.h"
+#include "core/PixelFormat.h"
 #include "core/Progress.h"
 
 #include <array>
@@ -137,6 +138,10 @@ struct QualityRunOptions {
     // table then names what refused a ball that the listing's cap hid (as "no candidate").
     // Verdicts are the same; times are not the robot's.
     bool explainRejections = false;
+    // The format the detector reads the rendered frames in: Uyvy hands it each frame as an IIDC
+    // camera's YUV 4:2:2 (calib/sim/UyvyEncoding.h; the thesis' camera and the robot's path), so
+    // the UYVY code (segmentation, denoise) is what is measured. Crops stay the rendered BGR.
+    PixelFormat pixelFormat = PixelFormat::Bgr8;
 };
 
 struct QualityRun {
