@@ -28,7 +28,7 @@ std::vector<OptionSpec> qualityToolOptions()
         {"threads", true, false, "N     with --quality-matrix: cells on N threads (default 1, honest timings; 0: all)"},
         {"misses", false, false, "      with --quality-matrix: why balls were missed and what false positives hit, per condition"},
         {"cells", true, false, "A,B   with --quality-matrix: only the cells whose name holds every one of these parts (e.g. dim,rods)"},
-        {"pixel-format", true, false, "F     with --quality-matrix: the format the detector reads the frames in: bgr8 (default) or uyvy (YUV 4:2:2, an IIDC camera's)"},
+        {"pixel-format", true, false, "F     with --quality-matrix: the format the detector reads the frames in: bgr8 or uyvy (YUV 4:2:2, an IIDC camera's); default: the floors file's, else bgr8"},
         {"auto-colours", true, false, "N     with --quality-matrix: each cell's colours by Auto colours from N frames of its field and light (default 0: the default colours)"},
         {"false-positives", false, false, "      with --quality-matrix: list every false-positive frame with its scores"},
         {"fp-crops", true, false, "DIR   with --false-positives: also write each one's surroundings, enlarged, as PNGs to DIR"},
@@ -110,9 +110,15 @@ int runQualityTool(const CommandLine& cl)
         if (!v || *v < 0 || *v > 30) return fail("--auto-colours must be a whole number from 0 to 30, not '" + *t + "'");
         runOptions.autoColourFrames = *v;
     }
+    if (floors) runOptions.pixelFormat = floors->pixelFormat;  // the format the floors were measured on
     if (auto f = cl.value("pixel-format")) {
-        if (*f == "uyvy") runOptions.pixelFormat = PixelFormat::Uyvy;
+        PixelFormat asked = PixelFormat::Bgr8;
+        if (*f == "uyvy") asked = PixelFormat::Uyvy;
         else if (*f != "bgr8") return fail("--pixel-format must be bgr8 or uyvy, not '" + *f + "'");
+        if (floors && asked != floors->pixelFormat)
+            return fail("--pixel-format " + *f + ": the floors in " + *cl.value("floors") + " were measured on " +
+                        std::string(pixelFormatName(floors->pixelFormat)) + " frames (drop --pixel-format)");
+        runOptions.pixelFormat = asked;
     }
     std::optional<MissCause> missCause;
     if (auto name = cl.value("miss-cause")) {
@@ -187,7 +193,7 @@ int runQualityTool(const CommandLine& cl)
     if (auto path = cl.value("write-floors")) {
         auto file = OutputFile::open(*path, true, error);
         if (!file) return fail(error);
-        if (auto e = file->write(serializeQualityFloors(floorsFromRun(run, matrix)))) return fail(*e);
+        if (auto e = file->write(serializeQualityFloors(floorsFromRun(run, matrix, runOptions.pixelFormat)))) return fail(*e);
         if (auto e = file->commit()) return fail(*e);
         std::cerr << "omnitune-eval: floors written to " << *path << "\n";
     }

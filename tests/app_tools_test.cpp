@@ -650,6 +650,13 @@ private slots:
                                            << QStringList{"--algorithm", "bogus"};
         QTest::newRow("negative max-error") << QStringList{"--session", "@S", "--max-error", "-1"}
                                             << QStringList{"--max-error"};
+        // The UYVY floors were measured on UYVY frames: checking them on BGR would compare two formats.
+        const QString uyvyFloors = OMNITUNE_SOURCE_DIR "/tests/quality_gate_floors_uyvy.csv";
+        QTest::newRow("floors of another format")
+            << QStringList{"--quality-matrix", "--floors", uyvyFloors, "--pixel-format", "bgr8"}
+            << QStringList{"--pixel-format", uyvyFloors, "uyvy"};
+        QTest::newRow("unknown pixel format") << QStringList{"--quality-matrix", "--pixel-format", "rgb24"}
+                                              << QStringList{"--pixel-format", "rgb24"};
     }
 
     void evalRejectsBadArguments()

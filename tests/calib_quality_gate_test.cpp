@@ -1,15 +1,18 @@
 // The quality gate (issue 9, section 5): the detector on the optics simulator's matrix of ball
 // kinds x light x distractors x frame sizes (plus ball-free cells), with the config fitted from
-// the simulated camera's measurements, against the floors in tests/quality_gate_floors.csv.
+// the simulated camera's measurements, against the floors in tests/quality_gate_floors.csv; and
+// the same matrix read as the robot's IIDC camera delivers it (YUV 4:2:2) against
+// tests/quality_gate_floors_uyvy.csv, whose figures differ (shared colour per pixel pair).
 // The floors hold what the detector achieved when they were written (less a margin) and issue
 // 9's targets; a run prints the measured table and the gap to each target, and fails naming
 // every metric that fell below its floor.
 //   OMNITUNE_GATE_FRAMES=N  frames per ball cell instead of the floors file's (slower, finer)
 // An unoptimised or sanitizer build (CI's ASan + UBSan run, ~10x slower) runs a slice of one
-// camera only and checks that the run completes without asserting the floors (the normal build does);
-// OMNITUNE_GATE_FULL=1 runs the whole matrix there too.
+// camera only, in BGR only, and checks that the run completes without asserting the floors (the
+// normal build does); OMNITUNE_GATE_FULL=1 runs the whole matrix, both formats, there too.
 // Regenerate the floors on purpose after a detector change:
 //   build/app/omnitune-eval --quality-matrix --threads 0 --write-floors tests/quality_gate_floors.csv
+//   build/app/omnitune-eval --quality-matrix --threads 0 --pixel-format uyvy --write-floors tests/quality_gate_floors_uyvy.csv
 #include "calib/eval/QualityFloors.h"
 #include "calib/eval/QualityReport.h"
 #include "calib/fit/NumberCsv.h"
@@ -45,6 +48,7 @@ bool fullMatrix()
 }
 
 const std::string kFloorsFile = OMNITUNE_SOURCE_DIR "/tests/quality_gate_floors.csv";
+const std::string kUyvyFloorsFile = OMNITUNE_SOURCE_DIR "/tests/quality_gate_floors_uyvy.csv";
 const std::string kDeviationsFile = OMNITUNE_SOURCE_DIR "/tests/quality_gate_deviations.csv";
 
 }  // namespace
@@ -55,24 +59,58 @@ class QualityGateTest : public QObject {
     QualityFloorsFile floors_;
     QualityRun run_;
     std::vector<OpticsCell> cells_;  // what run_ ran
+    QualityFloorsFile uyvyFloors_;
+    QualityRun uyvyRun_;  // the full matrix read as UYVY (normal build only)
     bool full_ = true;
+
+    // A floors file, parsed; fails the test naming the file when it cannot be read or parsed.
+    static bool loadFloors(const std::string& path, QualityFloorsFile& out)
+    {
+        const auto text = readTextFile(path);
+        if (!text) {
+            QTest::qFail((path + " cannot be read").c_str(), __FILE__, __LINE__);
+            return false;
+        }
+        std::string error;
+        const auto floors = parseQualityFloors(*text, error);
+        if (!floors) {
+            QTest::qFail((path + ": " + error).c_str(), __FILE__, __LINE__);
+            return false;
+        }
+        out = *floors;
+        return true;
+    }
+
+    // The matrix a floors file was measured on, with OMNITUNE_GATE_FRAMES applied.
+    static QualityMatrixOptions gateMatrix(const QualityFloorsFile& floors)
+    {
+        QualityMatrixOptions matrix = floors.matrix;
+        if (const char* env = std::getenv("OMNITUNE_GATE_FRAMES")) matrix.framesPerCell = std::max(1, std::atoi(env));
+        return matrix;
+    }
+
+    static QualityRun runGate(const std::vector<OpticsCell>& cells, PixelFormat format)
+    {
+        QualityRunOptions options;
+        options.threads = 0;  // every hardware thread: the figures do not depend on it
+        options.pixelFormat = format;
+        const QualityRun run = runQuality(cells, algorithmVariants(), {}, options);
+        const std::string md = qualitySummaryMarkdown(run, shippedVariants(run)) + "\n" +
+                               qualityBreakdownMarkdown(run, shippedVariants(run));
+        qInfo("%s frames, %zu cells, %d frames per ball cell\n%s", std::string(pixelFormatName(format)).c_str(),
+              run.cells.size(), cells.empty() ? 0 : cells.front().frames, md.c_str());
+        return run;
+    }
 
 private slots:
     void initTestCase()
     {
-        const auto text = readTextFile(kFloorsFile);
-        QVERIFY2(text.has_value(), (kFloorsFile + " cannot be read").c_str());
-        std::string error;
-        const auto floors = parseQualityFloors(*text, error);
-        QVERIFY2(floors.has_value(), (kFloorsFile + ": " + error).c_str());
-        floors_ = *floors;
-        QualityMatrixOptions matrix = floors_.matrix;
-        if (const char* env = std::getenv("OMNITUNE_GATE_FRAMES")) {
-            const int n = std::atoi(env);
-            QVERIFY2(n >= 1, "OMNITUNE_GATE_FRAMES must be a positive whole number");
-            matrix.framesPerCell = n;
-        }
-        cells_ = qualityMatrixCells(matrix);
+        if (const char* env = std::getenv("OMNITUNE_GATE_FRAMES"))
+            QVERIFY2(std::atoi(env) >= 1, "OMNITUNE_GATE_FRAMES must be a positive whole number");
+        if (!loadFloors(kFloorsFile, floors_) || !loadFloors(kUyvyFloorsFile, uyvyFloors_)) return;
+        QCOMPARE(floors_.pixelFormat, PixelFormat::Bgr8);
+        QCOMPARE(uyvyFloors_.pixelFormat, PixelFormat::Uyvy);
+        cells_ = qualityMatrixCells(gateMatrix(floors_));
         full_ = fullMatrix();
         if (!full_) {
             // One camera (each costs a calibration, slow without optimisation): 640x480 without
@@ -84,13 +122,9 @@ private slots:
                     slice.push_back(c);
             cells_ = slice;
         }
-        QualityRunOptions options;
-        options.threads = 0;  // every hardware thread: the figures do not depend on it
-        run_ = runQuality(cells_, algorithmVariants(), {}, options);
-        const std::string md = qualitySummaryMarkdown(run_, shippedVariants(run_)) + "\n" +
-                               qualityBreakdownMarkdown(run_, shippedVariants(run_));
-        qInfo("%zu cells%s, %d frames per ball cell\n%s", run_.cells.size(), full_ ? "" : " (a slice: unoptimised build)",
-              matrix.framesPerCell, md.c_str());
+        if (!full_) qInfo("a slice of the matrix, BGR only: unoptimised build");
+        run_ = runGate(cells_, PixelFormat::Bgr8);
+        if (full_) uyvyRun_ = runGate(qualityMatrixCells(gateMatrix(uyvyFloors_)), PixelFormat::Uyvy);
     }
 
     // Every ball kind meets every light and every distractor at both frame sizes, and the
@@ -114,20 +148,43 @@ private slots:
         for (std::size_t v = 0; v < run_.variants.size(); ++v) QCOMPARE(qualityTotal(run_, v).frames, frames);
     }
 
-    // The floors file holds every metric for every algorithm, so regenerating it cannot drop one.
+    // Each floors file holds every metric for every algorithm, so regenerating it cannot drop one.
     void floorsFileIsComplete()
     {
-        for (const QualityVariant& v : algorithmVariants())
-            for (const char* metric : {"detection_pct", "cell_min_detection_pct", "false_positive_pct", "range_std_cm"}) {
-                const bool present = std::any_of(floors_.floors.begin(), floors_.floors.end(), [&](const QualityFloor& f) {
-                    return f.algorithm == v.name && f.metric == metric;
-                });
-                QVERIFY2(present, (v.name + " " + metric + " has no row in " + kFloorsFile).c_str());
-            }
+        for (const auto& [file, floors] : {std::pair{kFloorsFile, floors_}, std::pair{kUyvyFloorsFile, uyvyFloors_}}) {
+            for (const QualityVariant& v : algorithmVariants())
+                for (const char* metric : {"detection_pct", "cell_min_detection_pct", "false_positive_pct", "range_std_cm"}) {
+                    const bool present = std::any_of(floors.floors.begin(), floors.floors.end(), [&](const QualityFloor& f) {
+                        return f.algorithm == v.name && f.metric == metric;
+                    });
+                    QVERIFY2(present, (v.name + " " + metric + " has no row in " + file).c_str());
+                }
+            std::string error;
+            const auto again = parseQualityFloors(serializeQualityFloors(floors), error);
+            QVERIFY2(again.has_value(), error.c_str());
+            QCOMPARE(serializeQualityFloors(*again), serializeQualityFloors(floors));
+        }
+    }
+
+    // pixel_format names the frames the floors were measured on: absent means BGR (files written
+    // before it), a format the detector does not read is refused with its line.
+    void floorsPixelFormat()
+    {
+        const std::string rows = "algorithm,metric,bound,target,floor,measured\nspecific,detection_pct,min,97,80,82\n";
         std::string error;
-        const auto again = parseQualityFloors(serializeQualityFloors(floors_), error);
-        QVERIFY2(again.has_value(), error.c_str());
-        QCOMPARE(serializeQualityFloors(*again), serializeQualityFloors(floors_));
+        auto plain = parseQualityFloors("seed,3\n" + rows, error);
+        QVERIFY2(plain.has_value(), error.c_str());
+        QCOMPARE(plain->pixelFormat, PixelFormat::Bgr8);
+        auto uyvy = parseQualityFloors("pixel_format,uyvy\nseed,3\n" + rows, error);
+        QVERIFY2(uyvy.has_value(), error.c_str());
+        QCOMPARE(uyvy->pixelFormat, PixelFormat::Uyvy);
+        QCOMPARE(uyvy->matrix.seed, 3u);
+        const std::string written = serializeQualityFloors(*uyvy);
+        QVERIFY2(written.find("pixel_format,uyvy\n") != std::string::npos, written.c_str());
+        QVERIFY2(written.find("--pixel-format uyvy --write-floors tests/quality_gate_floors_uyvy.csv") != std::string::npos,
+                 written.c_str());
+        QVERIFY(!parseQualityFloors("pixel_format,rgb24\n" + rows, error).has_value());
+        QVERIFY2(error.find("line 1") != std::string::npos && error.find("rgb24") != std::string::npos, error.c_str());
     }
 
     // Each row of the deviations table switches a real key to a valid value other than ours.
@@ -333,25 +390,30 @@ private slots:
 
     void floors_data()
     {
+        QTest::addColumn<bool>("uyvy");
         QTest::addColumn<QString>("algorithm");
         QTest::addColumn<QString>("metric");
-        for (const QualityFloor& f : floors_.floors)
-            QTest::newRow((f.algorithm + " " + f.metric).c_str())
-                << QString::fromStdString(f.algorithm) << QString::fromStdString(f.metric);
+        for (const QualityFloorsFile* file : {&floors_, &uyvyFloors_}) {
+            const bool uyvy = file == &uyvyFloors_;
+            for (const QualityFloor& f : file->floors)
+                QTest::newRow((std::string(uyvy ? "uyvy " : "bgr8 ") + f.algorithm + " " + f.metric).c_str())
+                    << uyvy << QString::fromStdString(f.algorithm) << QString::fromStdString(f.metric);
+        }
     }
 
     void floors()
     {
+        QFETCH(bool, uyvy);
         QFETCH(QString, algorithm);
         QFETCH(QString, metric);
         if (!full_) QSKIP("a slice of the matrix (unoptimised or sanitizer build): floors are asserted in the normal build");
-        QualityFloorsFile one = floors_;
+        QualityFloorsFile one = uyvy ? uyvyFloors_ : floors_;
         one.floors.erase(std::remove_if(one.floors.begin(), one.floors.end(),
                                         [&](const QualityFloor& f) {
                                             return f.algorithm != algorithm.toStdString() || f.metric != metric.toStdString();
                                         }),
                          one.floors.end());
-        const std::vector<QualityFloorCheck> checks = checkQualityFloors(run_, one);
+        const std::vector<QualityFloorCheck> checks = checkQualityFloors(uyvy ? uyvyRun_ : run_, one);
         QVERIFY2(!checks.empty(), "the floors file names an algorithm the gate does not run");
         for (const QualityFloorCheck& c : checks) {
             qInfo("%s", c.line.c_str());

@@ -84,6 +84,12 @@ std::optional<QualityFloorsFile> parseQualityFloors(const std::string& text, std
         if (t.empty() || t[0] == '#') continue;
         const std::vector<std::string> f = fields(t);
         if (!header) {
+            if (f.size() == 2 && f[0] == "pixel_format") {
+                if (f[1] == pixelFormatName(PixelFormat::Bgr8)) file.pixelFormat = PixelFormat::Bgr8;
+                else if (f[1] == pixelFormatName(PixelFormat::Uyvy)) file.pixelFormat = PixelFormat::Uyvy;
+                else return bad("pixel_format must be bgr8 or uyvy, not '" + f[1] + "'");
+                continue;
+            }
             if (f.size() == 2) {
                 char* end = nullptr;
                 const long v = std::strtol(f[1].c_str(), &end, 10);
@@ -121,11 +127,16 @@ std::optional<QualityFloorsFile> parseQualityFloors(const std::string& text, std
 
 std::string serializeQualityFloors(const QualityFloorsFile& file)
 {
+    const bool uyvy = file.pixelFormat == PixelFormat::Uyvy;
     std::string s =
         "# Floors of the quality gate (tests/calib_quality_gate_test.cpp) on the optics simulator's matrix\n"
         "# (calib/eval/QualityMatrix.h). floor: what the test asserts (measured when written, less a margin);\n"
-        "# target: issue 9's goal; '-': none. Regenerate (after a detector change, on purpose):\n"
-        "#   build/app/omnitune-eval --quality-matrix --threads 0 --write-floors tests/quality_gate_floors.csv\n";
+        "# target: issue 9's goal; '-': none. pixel_format: the frames as the detector read them.\n"
+        "# Regenerate (after a detector change, on purpose):\n"
+        "#   build/app/omnitune-eval --quality-matrix --threads 0 ";
+    s += uyvy ? "--pixel-format uyvy --write-floors tests/quality_gate_floors_uyvy.csv\n"
+              : "--write-floors tests/quality_gate_floors.csv\n";
+    s += "pixel_format," + std::string(pixelFormatName(file.pixelFormat)) + "\n";
     s += "frames_per_cell," + std::to_string(file.matrix.framesPerCell) + "\n";
     s += "ball_free_frames_per_cell," + std::to_string(file.matrix.ballFreeFramesPerCell) + "\n";
     s += "seed," + std::to_string(file.matrix.seed) + "\n";
@@ -163,10 +174,11 @@ std::optional<double> qualityMetric(const QualityRun& run, std::size_t variant, 
     return std::nullopt;
 }
 
-QualityFloorsFile floorsFromRun(const QualityRun& run, const QualityMatrixOptions& matrix)
+QualityFloorsFile floorsFromRun(const QualityRun& run, const QualityMatrixOptions& matrix, PixelFormat pixelFormat)
 {
     QualityFloorsFile file;
     file.matrix = matrix;
+    file.pixelFormat = pixelFormat;
     for (std::size_t v = 0; v < run.variants.size(); ++v) {
         if (!run.variants[v].overrides.empty()) continue;
         const bool opencv = run.variants[v].algorithm == Algorithm::OpenCv;

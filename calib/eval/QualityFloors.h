@@ -1,7 +1,8 @@
 #pragma once
 // The quality gate's floors file (tests/quality_gate_floors.csv): for each algorithm and metric
 // the issue's target and the floor the test asserts (what the detector measured when the file
-// was written, less a margin), plus the matrix settings the numbers were measured with.
+// was written, less a margin), plus the matrix settings and the frames' pixel format the numbers
+// were measured with (tests/quality_gate_floors_uyvy.csv holds the robot's YUV 4:2:2 figures).
 #include "calib/eval/QualityMatrix.h"
 #include "calib/eval/QualityRun.h"
 
@@ -25,6 +26,7 @@ struct QualityFloor {
 
 struct QualityFloorsFile {
     QualityMatrixOptions matrix;  // frames_per_cell, ball_free_frames_per_cell, seed
+    PixelFormat pixelFormat = PixelFormat::Bgr8;  // pixel_format: what the detector read (absent: bgr8)
     std::vector<QualityFloor> floors;
 };
 
@@ -38,7 +40,8 @@ std::optional<double> qualityMetric(const QualityRun& run, std::size_t variant, 
 // Floors from a run of algorithmVariants(): each metric as measured less a margin (2 points of
 // detection, one frame of a cell, 0.3 points of false positives, 1 cm or a fifth of range std),
 // with issue 9's targets.
-QualityFloorsFile floorsFromRun(const QualityRun& run, const QualityMatrixOptions& matrix);
+QualityFloorsFile floorsFromRun(const QualityRun& run, const QualityMatrixOptions& matrix,
+                                PixelFormat pixelFormat = PixelFormat::Bgr8);
 
 struct QualityFloorCheck {
     QualityFloor floor;
