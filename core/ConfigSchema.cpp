@@ -818,6 +818,12 @@ std::vector<ConfigKey> buildSchema()
                           "bright light pale_line_min_value_ratio x the carpet's V lies past 255 and no line pixel was pale: a "
                           "clipped spot on a line near the rim passed as a far ball; 0: the ratio alone",
                           [](auto& c) -> auto& { return c.validation.paleLineValueCap; }));
+    s.push_back(doubleKey("validation.pale_line_carpet_value_ratio", "ratio", 0, 10, false,
+                          "line_arms_pale: a pale pixel of the carpet's own class counts as line too when its brightness (V) is "
+                          "at least this many times the carpet's mean V around the candidate and its hue and saturation are not "
+                          "the carpet's (carpet_colour_sigmas): in dim light a far line is barely brighter than the carpet and "
+                          "falls in its class, so a junction of far lines lost its arms; 0: the carpet's class is never line",
+                          [](auto& c) -> auto& { return c.validation.paleLineCarpetValueRatio; }));
     s.push_back(doubleKey("validation.line_arms_max_radius_px", "px", 0, 100, false,
                           "line_arms: candidates whose expected radius is larger are not judged (a line junction looks round only "
                           "at a far ball's size; a near ball's border meets lines at many angles)",

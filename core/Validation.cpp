@@ -604,8 +604,9 @@ RejectReason firstFailedTest(const BallCandidate& c, const ValidationOptions& op
 }
 
 // Pale line pixels for the line-arms test (line_arms_pale): brighter than the carpet around the
-// candidate by pale_line_min_value_ratio, or at least pale_line_value_cap (bright light). None
-// without the frame's colours or a carpet seen.
+// candidate by pale_line_min_value_ratio, or at least pale_line_value_cap (bright light); of the
+// carpet's class, by pale_line_carpet_value_ratio and off the carpet's colour. None without the
+// frame's colours or a carpet seen.
 PaleLine paleLineAround(const FrameColour* colour, const cv::Mat& classes, const Geometry& geometry,
                         const ColourRoles& roles, const BallCandidate& c, const ValidationOptions& options)
 {
@@ -614,7 +615,9 @@ PaleLine paleLineAround(const FrameColour* colour, const cv::Mat& classes, const
     if (!carpet.valid()) return {};
     double minValue = options.paleLineMinValueRatio * carpet.value();
     if (options.paleLineValueCap > 0.0) minValue = std::min(minValue, options.paleLineValueCap);
-    return {colour, options.paleLineMaxSaturation, minValue};
+    const double carpetClassMinValue =
+        options.paleLineCarpetValueRatio > 0.0 ? options.paleLineCarpetValueRatio * carpet.value() : -1.0;
+    return {colour, options.paleLineMaxSaturation, minValue, carpetClassMinValue, carpet, options.carpetTolerance};
 }
 
 }  // namespace

@@ -362,6 +362,12 @@ struct ValidationOptions {
     // a clipped spot on a line near the rim passed as a far ball (optics matrix seeds 5-6, bright
     // 480x480: 4 of 16 false-positive frames; as many balls found on seeds 1-6). 0: the ratio alone.
     double paleLineValueCap = 250.0;
+    // x the carpet's mean V; a pale pixel of the carpet's own class counts as line too when at
+    // least this bright and not of the carpet's colour (carpetTolerance). In dim light a far line
+    // is barely brighter than the carpet (seed 6, dim, cyan-green: green 60-70 against 46-57) and
+    // both pixel formats put it in the carpet's class, so a junction kept only the arms its noisy
+    // pixels happened to show. 0: the carpet's class is never line.
+    double paleLineCarpetValueRatio = 1.15;
     // px; larger candidates are not judged: a junction looks round only at a far ball's size,
     // and a near ball's border meets lines at many angles (balls at 10-18 px were lost).
     double lineArmsMaxRadiusPx = 8.0;

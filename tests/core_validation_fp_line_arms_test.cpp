@@ -11,6 +11,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <optional>
+
 #include <QtTest>
 
 using namespace omnitune;
@@ -97,6 +99,9 @@ struct PaleScene {
     cv::Scalar carpet;
     cv::Scalar line;
     int lineWidth = 2;
+    // A disc of its own colour, a pixel wider than the ball, drawn over where the lines meet (a
+    // junction brighter than its lines, a ball on them); default: the lines' colour, the ball's size.
+    std::optional<cv::Scalar> disc;
 
     cv::Mat draw(const Config& c, const FarSpot& spot, bool junction) const
     {
@@ -108,6 +113,7 @@ struct PaleScene {
                 const cv::Point2d dir(std::cos(deg * M_PI / 180.0), std::sin(deg * M_PI / 180.0));
                 cv::line(frame, spot.p, cv::Point(cv::Point2d(spot.p) + dir * 5.0 * spot.r), line, lineWidth);
             }
+            if (disc) cv::circle(frame, spot.p, ri + 1, *disc, cv::FILLED);
         } else {
             cv::circle(frame, spot.p, ri, kOrange, cv::FILLED);
         }
@@ -289,8 +295,48 @@ private slots:
     // passes; its pale pixels give its two arms back. An orange ball on the same carpet passes.
     void dimJunctionHasPaleArms()
     {
-        const PaleScene dim{cv::Scalar(25, 70, 25), cv::Scalar(120, 120, 120), 2};
+        const PaleScene dim{cv::Scalar(25, 70, 25), cv::Scalar(120, 120, 120), 2, {}};
         checkPaleArms(dim, [](Config& c) { c.validation.lineArmsPale = false; });
+    }
+
+    // validation.pale_line_carpet_value_ratio: dimmer still, a far line is barely brighter than
+    // the carpet (V 68 on a cyan-green carpet of V 52, the optics matrix's dim light) and falls in
+    // the carpet's own colour class, so neither the line class nor the pale pixels off it give an
+    // arm; only where the lines meet is the grey bright enough to leave the carpet's class (a
+    // round blob of a far ball's size). The arms' pixels are paler than the carpet and not its
+    // colour: they are line. An orange ball on the same carpet passes.
+    void faintJunctionInTheCarpetClassHasPaleArms()
+    {
+        const PaleScene faint{cv::Scalar(35, 52, 13), cv::Scalar(62, 68, 50), 2, cv::Scalar(110, 110, 110)};
+        {
+            Config c;
+            const FarSpot spot = farSpot(c);
+            const EdgeStages s(c, faint.draw(c, spot, true));
+            const cv::Point2d dir(std::cos(100.0 * M_PI / 180.0), std::sin(100.0 * M_PI / 180.0));
+            const cv::Point onArm(cv::Point2d(spot.p) + dir * 3.0 * spot.r);
+            QCOMPARE(int(s.classes.at<std::uint8_t>(onArm)), int(ColorClass::Green));  // the carpet's class
+        }
+        checkPaleArms(faint, [](Config& c) { c.validation.paleLineCarpetValueRatio = 0.0; });
+    }
+
+    // The same rule leaves the carpet's own colour alone: on a pale, dim carpet (saturation 74)
+    // brighter streaks of the same hue and saturation (a lamp's light, V 77 on V 62) pass the
+    // brightness bound but are carpet, so a white ball (pale itself, so nothing but the streaks
+    // decides) with two such streaks leaving it is no junction.
+    void carpetColouredStreaksAreNoArms()
+    {
+        Config c;
+        const FarSpot spot = farSpot(c);
+        const PaleScene streaks{cv::Scalar(52, 62, 44), cv::Scalar(64, 77, 54), 2, cv::Scalar(200, 200, 200)};
+        const cv::Mat frame = streaks.draw(c, spot, true);
+        const EdgeStages s(c, frame);
+        const cv::Point2d dir(std::cos(100.0 * M_PI / 180.0), std::sin(100.0 * M_PI / 180.0));
+        const cv::Point onArm(cv::Point2d(spot.p) + dir * 3.0 * spot.r);
+        QCOMPARE(int(s.classes.at<std::uint8_t>(onArm)), int(ColorClass::Green));
+        const FrameColour colour(frame, PixelFormat::Bgr8);
+        QVERIFY(colour.hsvAt(onArm.x, onArm.y).v >= c.validation.paleLineCarpetValueRatio * 62.0);
+        const BallCandidate ball = validate(c, frame, spot.p);
+        QVERIFY2(ball.rejected == RejectReason::None, qPrintable(verdict(ball)));
     }
 
     // validation.pale_line_value_cap: in bright light the carpet's V is 235, so 1.4 x it lies past
@@ -301,7 +347,7 @@ private slots:
     {
         // Blue-tinted white (hue 96); 4 px wide, so that blurred the middle keeps the line's colour
         // (a 2 px line blends into the carpet's green class).
-        const PaleScene bright{cv::Scalar(60, 235, 40), cv::Scalar(255, 240, 185), 4};
+        const PaleScene bright{cv::Scalar(60, 235, 40), cv::Scalar(255, 240, 185), 4, {}};
         QVERIFY(Config{}.validation.paleLineMinValueRatio * 235.0 > 255.0);  // the ratio alone finds nothing
         checkPaleArms(bright, [](Config& c) { c.validation.paleLineValueCap = 0.0; });
     }
