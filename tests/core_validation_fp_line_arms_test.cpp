@@ -103,6 +103,13 @@ struct PaleScene {
     // junction brighter than its lines, a ball on them); default: the lines' colour, the ball's size.
     std::optional<cv::Scalar> disc;
 
+    // A point on the first line (at 100 degrees), `radii` expected radii out from the junction.
+    static cv::Point onFirstLine(const FarSpot& spot, double radii)
+    {
+        const cv::Point2d dir(std::cos(100.0 * M_PI / 180.0), std::sin(100.0 * M_PI / 180.0));
+        return cv::Point(cv::Point2d(spot.p) + dir * radii * spot.r);
+    }
+
     cv::Mat draw(const Config& c, const FarSpot& spot, bool junction) const
     {
         cv::Mat frame(c.geometry.imageHeight, c.geometry.imageWidth, CV_8UC3, carpet);
@@ -312,8 +319,7 @@ private slots:
             Config c;
             const FarSpot spot = farSpot(c);
             const EdgeStages s(c, faint.draw(c, spot, true));
-            const cv::Point2d dir(std::cos(100.0 * M_PI / 180.0), std::sin(100.0 * M_PI / 180.0));
-            const cv::Point onArm(cv::Point2d(spot.p) + dir * 3.0 * spot.r);
+            const cv::Point onArm = PaleScene::onFirstLine(spot, 3.0);
             QCOMPARE(int(s.classes.at<std::uint8_t>(onArm)), int(ColorClass::Green));  // the carpet's class
         }
         checkPaleArms(faint, [](Config& c) { c.validation.paleLineCarpetValueRatio = 0.0; });
@@ -330,8 +336,7 @@ private slots:
         const PaleScene streaks{cv::Scalar(52, 62, 44), cv::Scalar(64, 77, 54), 2, cv::Scalar(200, 200, 200)};
         const cv::Mat frame = streaks.draw(c, spot, true);
         const EdgeStages s(c, frame);
-        const cv::Point2d dir(std::cos(100.0 * M_PI / 180.0), std::sin(100.0 * M_PI / 180.0));
-        const cv::Point onArm(cv::Point2d(spot.p) + dir * 3.0 * spot.r);
+        const cv::Point onArm = PaleScene::onFirstLine(spot, 3.0);
         QCOMPARE(int(s.classes.at<std::uint8_t>(onArm)), int(ColorClass::Green));
         const FrameColour colour(frame, PixelFormat::Bgr8);
         QVERIFY(colour.hsvAt(onArm.x, onArm.y).v >= c.validation.paleLineCarpetValueRatio * 62.0);
