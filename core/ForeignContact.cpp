@@ -1,6 +1,7 @@
 #include "core/ForeignContact.h"
 
 #include "core/Geometry.h"
+#include "core/RoundHalfAway.h"
 
 #include <array>
 #include <cmath>
@@ -29,8 +30,8 @@ bool ForeignContactRay::entersObject(cv::Point p, double r)
 bool ForeignContactRay::objectGoesOn(double fromR) const
 {
     for (double r = fromR; r <= reachPx_ + 1e-9; r += 0.5) {
-        const int px = int(std::lround(x_ + r * ca_));
-        const int py = int(std::lround(y_ + r * sa_));
+        const int px = roundHalfAway(x_ + r * ca_);
+        const int py = roundHalfAway(y_ + r * sa_);
         if (px < 0 || py < 0 || px >= classes_.cols || py >= classes_.rows) return true;
         if (!geometry_.isUsed(px, py)) continue;  // a rod across the object: unknown, not its end
         const std::uint8_t cls = classes_.ptr<std::uint8_t>(py)[px];

@@ -1,5 +1,7 @@
 #include "core/HallRay.h"
 
+#include "core/RoundHalfAway.h"
+
 #include <climits>
 #include <cmath>
 #include <cstdlib>
@@ -19,7 +21,7 @@ constexpr int kCarpetRun = 2;
 
 cv::Point along(const HallRaySpan& s, double r)
 {
-    return {int(std::lround(s.centre.x + r * s.ca)), int(std::lround(s.centre.y + r * s.sa))};
+    return {roundHalfAway(s.centre.x + r * s.ca), roundHalfAway(s.centre.y + r * s.sa)};
 }
 
 // Whether the ray from the band's end on reaches the rim over floor (no carpet, no mask).

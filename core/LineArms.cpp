@@ -1,6 +1,7 @@
 #include "core/LineArms.h"
 
 #include "core/Geometry.h"
+#include "core/RoundHalfAway.h"
 
 #include <algorithm>
 #include <array>
@@ -23,8 +24,8 @@ LineArms lineArmsAround(const cv::Mat& classes, const Geometry& geometry, const 
     const double farPx = reach * radiusPx;
     const int rays = armRayCount(farPx);
     auto lineAt = [&](double px, double py) {
-        const int ix = int(std::lround(px));
-        const int iy = int(std::lround(py));
+        const int ix = roundHalfAway(px);
+        const int iy = roundHalfAway(py);
         if (ix < 0 || iy < 0 || ix >= classes.cols || iy >= classes.rows || !geometry.isUsed(ix, iy)) return false;
         const std::uint8_t id = classes.ptr<std::uint8_t>(iy)[ix];
         return roles.line(id) || pale.at(ix, iy, id, roles);

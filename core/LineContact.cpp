@@ -1,6 +1,7 @@
 #include "core/LineContact.h"
 
 #include "core/Geometry.h"
+#include "core/RoundHalfAway.h"
 
 #include <cmath>
 
@@ -26,8 +27,8 @@ bool LineContactRay::entersLine(cv::Point p, double r)
 bool LineContactRay::lineGoesOn(double fromR) const
 {
     for (double r = fromR; r <= reachPx_ + 1e-9; r += 0.5) {
-        const int px = int(std::lround(x_ + r * ca_));
-        const int py = int(std::lround(y_ + r * sa_));
+        const int px = roundHalfAway(x_ + r * ca_);
+        const int py = roundHalfAway(y_ + r * sa_);
         if (px < 0 || py < 0 || px >= classes_.cols || py >= classes_.rows) return true;
         if (!geometry_.isUsed(px, py)) continue;  // a rod across the line: unknown, not its end
         if (!roles_.line(classes_.ptr<std::uint8_t>(py)[px])) return false;

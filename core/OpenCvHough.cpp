@@ -4,6 +4,7 @@
 #include "core/DiscCentroid.h"
 #include "core/Geometry.h"
 #include "core/ExpectedRadius.h"
+#include "core/RoundHalfAway.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -80,7 +81,7 @@ const cv::Mat& OpenCvHough::ringInput(const cv::Mat& binary, const Geometry& geo
         ring.centreX = g.centerX;
         ring.centreY = g.centerY;
         const double reach = b.maxRadius + 2.0;
-        const cv::Point c(int(std::lround(g.centerX)) - b.roi.x, int(std::lround(g.centerY)) - b.roi.y);
+        const cv::Point c(roundHalfAway(g.centerX) - b.roi.x, roundHalfAway(g.centerY) - b.roi.y);
         ring.outside.create(b.roi.size(), CV_8UC1);
         ring.outside.setTo(255);
         cv::circle(ring.outside, c, int(std::ceil(b.maxDistancePx + reach)), 0, cv::FILLED);
@@ -109,8 +110,8 @@ void OpenCvHough::appendCircles(const cv::Mat& binary, const OpenCvHoughOptions&
         }
         BallCandidate cand;
         cand.source = CandidateSource::OpenCvHough;
-        cand.x = int(std::lround(c[0]));
-        cand.y = int(std::lround(c[1]));
+        cand.x = roundHalfAway(c[0]);
+        cand.y = roundHalfAway(c[1]);
         cand.radiusPx = c[2];
         const bool inside = cand.x >= 0 && cand.y >= 0 && cand.x < binary.cols && cand.y < binary.rows;
         cand.distancePx = inside ? geometry.distanceAt(cand.x, cand.y) : 0.0;
@@ -124,7 +125,7 @@ void OpenCvHough::appendCircles(const cv::Mat& binary, const OpenCvHoughOptions&
             // Sub-pixel steps; the window reaches a pixel past the ball for its blurred border.
             cv::Point2d p(c[0], c[1]);
             for (int it = 0; it < 3; ++it) p = nonGreenCentroid(binary, p, cand.expectedRadiusPx + 1.0);
-            const cv::Point q(int(std::lround(p.x)), int(std::lround(p.y)));
+            const cv::Point q(roundHalfAway(p.x), roundHalfAway(p.y));
             if (centreJudged(geometry, options, q.x, q.y)) {
                 cand.x = q.x;
                 cand.y = q.y;

@@ -1,5 +1,7 @@
 #include "core/RadialSensors.h"
 
+#include "core/RoundHalfAway.h"
+
 #include <cmath>
 
 namespace omnitune {
@@ -16,8 +18,8 @@ RadialSensors::RadialSensors(const RadialSensorOptions& options, const Geometry&
         int lastX = -1;
         int lastY = -1;
         for (double r = options.innerRadius; r <= options.outerRadius; r += 0.5) {
-            const int x = int(std::lround(g.centerX + r * c));
-            const int y = int(std::lround(g.centerY + r * s));
+            const int x = roundHalfAway(g.centerX + r * c);
+            const int y = roundHalfAway(g.centerY + r * s);
             if (x == lastX && y == lastY) continue;
             lastX = x;
             lastY = y;

@@ -7,6 +7,7 @@
 #include "core/ExpectedRadius.h"
 #include "core/FrameColour.h"
 #include "core/Geometry.h"
+#include "core/RoundHalfAway.h"
 #include "core/Validation.h"
 
 #include <algorithm>
@@ -58,11 +59,11 @@ RecentreCounts recentreRefusals(std::vector<BallCandidate>& candidates, std::siz
         double radius = refused.expectedRadiusPx;
         for (int step = 0; step < 3; ++step) {
             p = centroidOnce(colour, classes, geometry, roles, carpet, p, radius, options);
-            const cv::Point q(int(std::lround(p.x)), int(std::lround(p.y)));
+            const cv::Point q(roundHalfAway(p.x), roundHalfAway(p.y));
             if (!processed(q)) break;
             radius = expectedRadiusAt(geometry, ball, q.x, q.y);
         }
-        const cv::Point q(int(std::lround(p.x)), int(std::lround(p.y)));
+        const cv::Point q(roundHalfAway(p.x), roundHalfAway(p.y));
         if (!processed(q)) continue;
         BallCandidate moved = movedCandidate(refused, q.x, q.y, CandidateMove::ToColourCentroid, geometry, ball);
         // Most moves fail on colour again (dim speckle, a line): their shape is not measured.

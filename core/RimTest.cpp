@@ -2,6 +2,7 @@
 
 #include "core/BallEllipse.h"
 #include "core/Geometry.h"
+#include "core/RoundHalfAway.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,8 +34,8 @@ RimClosure rimClosure(const cv::Mat& classes, const Geometry& geometry, const Co
         bool judged = true;
         bool closed = false;
         for (double r = 0.5; r <= rMax + 1e-9; r += 0.5) {
-            const int px = int(std::lround(x + r * ca));
-            const int py = int(std::lround(y + r * sa));
+            const int px = roundHalfAway(x + r * ca);
+            const int py = roundHalfAway(y + r * sa);
             if (px < 0 || py < 0 || px >= classes.cols || py >= classes.rows || !geometry.isUsed(px, py)) {
                 judged = false;  // a rod or the body in the way: says nothing
                 break;
@@ -62,7 +63,7 @@ double rimArcRunPx(const cv::Mat& classes, const Geometry& geometry, const Colou
     const double a0 = std::atan2(y - cy, x - cx);
     auto pixelAlong = [&](double way, double s) {
         const double a = a0 + way * s / d;
-        return cv::Point(int(std::lround(cx + d * std::cos(a))), int(std::lround(cy + d * std::sin(a))));
+        return cv::Point(roundHalfAway(cx + d * std::cos(a)), roundHalfAway(cy + d * std::sin(a)));
     };
     auto inImage = [&](cv::Point p) { return p.x >= 0 && p.y >= 0 && p.x < classes.cols && p.y < classes.rows; };
     // What the arc holds `s` px along it `way`: nothing (unprocessed or off the image), or the class.

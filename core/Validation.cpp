@@ -13,6 +13,7 @@
 #include "core/LineContact.h"
 #include "core/LineShare.h"
 #include "core/RimTest.h"
+#include "core/RoundHalfAway.h"
 #include "core/SurroundContrast.h"
 
 #include <algorithm>
@@ -120,7 +121,7 @@ struct Circle {
     // The pixel `r` px out from the centre in the unit direction (ca, sa).
     cv::Point along(double r, double ca, double sa) const
     {
-        return {int(std::lround(x + r * ca)), int(std::lround(y + r * sa))};
+        return {roundHalfAway(x + r * ca), roundHalfAway(y + r * sa)};
     }
 };
 

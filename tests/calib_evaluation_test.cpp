@@ -58,6 +58,12 @@ private slots:
         QCOMPARE(judge(missed(1, false), &ballHere), TruthVerdict::Missed);  // unreadable
         QCOMPARE(judge(seen(1, 1.0, 2.0), &noBall), TruthVerdict::FalsePositive);
         QCOMPARE(judge(missed(1), &noBall), TruthVerdict::Correct);
+        // A ball more than half hidden (behind a rod) is no ball to find, and a detection at it no
+        // false positive; one elsewhere still is.
+        const cv::Point2d hidden(1.0, 2.0);
+        QCOMPARE(judge(seen(1, 1.1, 2.0), &noBall, {}, hidden), TruthVerdict::AtHiddenBall);
+        QCOMPARE(judge(seen(1, 1.6, 2.0), &noBall, {}, hidden), TruthVerdict::FalsePositive);
+        QCOMPARE(judge(missed(1), &noBall, {}, hidden), TruthVerdict::Correct);
     }
 
     void ratioMeanStdAndFalsePositives()

@@ -49,12 +49,18 @@ std::string fmt(const char* f, double a, double b)
 
 }  // namespace
 
-TruthVerdict judge(const FrameOutcome& o, const TruthRow* truth, const EvaluationOptions& options)
+TruthVerdict judge(const FrameOutcome& o, const TruthRow* truth, const EvaluationOptions& options,
+                   const std::optional<cv::Point2d>& hiddenBallM)
 {
     if (!truth) return TruthVerdict::Unannotated;
     const BallDetection& d = o.detection;
     if (!o.processed) return truth->ballVisible ? TruthVerdict::Missed : TruthVerdict::Correct;
-    if (!truth->ballVisible) return d.found ? TruthVerdict::FalsePositive : TruthVerdict::Correct;
+    if (!truth->ballVisible) {
+        if (!d.found) return TruthVerdict::Correct;
+        const bool atHidden =
+            hiddenBallM && std::hypot(d.xM - hiddenBallM->x, d.yM - hiddenBallM->y) <= options.maxErrorM;
+        return atHidden ? TruthVerdict::AtHiddenBall : TruthVerdict::FalsePositive;
+    }
     if (!d.found) return TruthVerdict::Missed;
     return std::hypot(d.xM - truth->xM, d.yM - truth->yM) <= options.maxErrorM ? TruthVerdict::Correct
                                                                                : TruthVerdict::FalsePositive;

@@ -6,6 +6,7 @@
 #include "calib/session/TruthCsv.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,8 +58,14 @@ enum class TruthVerdict {
     Correct,        // ball visible and found within maxErrorM, or no ball and none found
     Missed,         // ball visible, nothing found (or the frame could not be processed)
     FalsePositive,  // a detection in a ball-less frame, or farther than maxErrorM from the truth
+    AtHiddenBall,   // no visible ball, but the detection lies within maxErrorM of one more than
+                    // half hidden (behind a rod, a robot, our body; cut by the frame): neither
+                    // a find nor a false positive
 };
-TruthVerdict judge(const FrameOutcome& outcome, const TruthRow* truth, const EvaluationOptions& options = {});
+// `hiddenBallM`: where (robot frame, m) the frame's ball lies when it is in the image but more
+// than half hidden, so not `truth->ballVisible`; a simulator knows it, truth.csv does not say.
+TruthVerdict judge(const FrameOutcome& outcome, const TruthRow* truth, const EvaluationOptions& options = {},
+                   const std::optional<cv::Point2d>& hiddenBallM = std::nullopt);
 
 std::string evaluationMarkdown(const std::vector<EvaluationRow>& rows);
 std::string evaluationCsv(const std::vector<EvaluationRow>& rows);

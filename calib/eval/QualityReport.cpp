@@ -179,6 +179,8 @@ std::string qualityFalsePositivesMarkdown(const QualityRun& run, const std::vect
     for (std::size_t i = 0; i < totals.size(); ++i)
         md += " " + std::to_string(totals[i].falsePositives) + " (" + std::to_string(ballFree[i].falsePositives) +
               " ball-free) |";
+    md += "\n| not counted: a ball more than half hidden, found where it lies |";
+    for (const QualityTally& t : totals) md += " " + std::to_string(t.atHiddenBalls) + " |";
     return md + "\n";
 }
 

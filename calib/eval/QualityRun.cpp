@@ -47,6 +47,7 @@ void QualityTally::add(const QualityTally& o)
     BallFrameTally::add(o);
     frames += o.frames;
     falsePositives += o.falsePositives;
+    atHiddenBalls += o.atHiddenBalls;
     rangeErrorsM.insert(rangeErrorsM.end(), o.rangeErrorsM.begin(), o.rangeErrorsM.end());
     timesMs.insert(timesMs.end(), o.timesMs.begin(), o.timesMs.end());
     for (std::size_t i = 0; i < byPlace.size(); ++i) byPlace[i].add(o.byPlace[i]);
@@ -183,8 +184,12 @@ private:
             }
             const FrameOutcome outcome = outcomeOf(int(f), result_);
             const TruthRow& truth = t->second;
-            const TruthVerdict verdict = judge(outcome, &truth, options_.evaluation);
+            const auto hidden = rendered.hiddenBalls.find(int(f));
+            const TruthVerdict verdict =
+                judge(outcome, &truth, options_.evaluation,
+                      hidden == rendered.hiddenBalls.end() ? std::nullopt : std::optional<cv::Point2d>(hidden->second));
             ++tally.frames;
+            tally.atHiddenBalls += verdict == TruthVerdict::AtHiddenBall;
             if (outcome.processed) tally.timesMs.push_back(outcome.timeMs);
             if (verdict == TruthVerdict::FalsePositive) {
                 ++tally.falsePositives;

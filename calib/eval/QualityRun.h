@@ -88,6 +88,7 @@ struct BallFrameTally {
 struct QualityTally : BallFrameTally {
     int frames = 0;          // judged frames (ball or not)
     int falsePositives = 0;  // detections in ball-free frames or too far from the truth
+    int atHiddenBalls = 0;   // detections of a ball more than half hidden, at it (not counted either way)
     // Correct detections of balls within QualityRunOptions::rangeWithinM: detected minus true
     // horizontal distance from the robot, m.
     std::vector<double> rangeErrorsM;

@@ -286,6 +286,8 @@ OpticsCellFrames renderCell(const OpticsCell& cell, const Config& base)
         OpticsTruth t;
         out.frames.push_back(cam.renderer->render(scene, &t));
         out.truth[i] = toTruthRow(t, i, cell.ballPresent);
+        if (cell.ballPresent && !out.truth[i].ballVisible && t.area > 0.0 && t.visibleFraction > 0.0)
+            out.hiddenBalls[i] = cv::Point2d(t.xM, t.yM);
     }
     return out;
 }

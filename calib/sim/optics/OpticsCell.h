@@ -49,6 +49,10 @@ struct OpticsCell {
 struct OpticsCellFrames {
     std::vector<cv::Mat> frames;          // BGR
     std::map<int, TruthRow> truth;        // one row per frame (calib/session/TruthCsv.h)
+    // Frames whose ball shows some pixels but is not visible by the truth's rule (more than half
+    // hidden, or its centre off the frame): its robot-frame position, m. A detection there is
+    // no false positive (judge's hiddenBallM).
+    std::map<int, cv::Point2d> hiddenBalls;
     Config fittedConfig;                  // from the camera's measurements, never the truth
     std::string calibrationError;         // empty, or why the fit failed (fittedConfig is then `base`)
     FieldDimensions field;                // the field the scenes stand on (where a truth row's ball lies)
