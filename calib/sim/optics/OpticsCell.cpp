@@ -286,7 +286,7 @@ OpticsCellFrames renderCell(const OpticsCell& cell, const Config& base)
         OpticsTruth t;
         out.frames.push_back(cam.renderer->render(scene, &t));
         out.truth[i] = toTruthRow(t, i, cell.ballPresent);
-        if (cell.ballPresent && !out.truth[i].ballVisible && t.area > 0.0 && t.visibleFraction > 0.0)
+        if (cell.ballPresent && !out.truth[i].ballVisible && t.visibleFraction > 0.0)  // some of it shows
             out.hiddenBalls[i] = cv::Point2d(t.xM, t.yM);
     }
     return out;
